@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# The README's first command: install, build, run penumbra on the built-in default scene.
+# With a display it opens the window; without one it renders headless into ./out and prints
+# per-pass GPU timings. Extra arguments go to penumbra (e.g. `scripts/run.sh render --frames 30`).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+exec ./build/penumbra "$@"

@@ -1,0 +1,94 @@
+#version 450 core
+// Forward Blinn-Phong in linear space (SPEC §2, issue 2):
+//   ambient*diffuse + sum_lights (diffuse*max(N.L,0) + specular) * colour*intensity * visibility
+// where visibility (rgb, coloured) comes from the active shadow technique's lookup.
+#include "../common/material.glsl"
+#include "../common/lights.glsl"
+#include "shadow_lookup.glsl"
+
+in VertexOut {
+    vec3 worldPos;
+    vec3 normal;
+    vec2 uv;
+} vIn;
+
+layout(binding = UNIT_PROJECTOR) uniform sampler2D uProjectorImage[MAX_PROJECTORS];
+uniform vec3 uCameraPos;
+uniform vec3 uAmbient;
+uniform int uTranslucentPass;  // 1: dual-source output of transmittance for blending
+uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal
+uniform int uDebugLight;
+
+layout(location = 0, index = 0) out vec4 outColor;
+layout(location = 0, index = 1) out vec4 outTransmit;
+
+// Constant indices only: llvmpipe (LLVM 15) crashes on dynamically indexed sampler arrays
+// once a cube sampler is in the same shader (see shaders/common/shadow_samplers.glsl).
+vec3 projectorTexel(int slot, vec2 uv) {
+    return slot == 0 ? texture(uProjectorImage[0], uv).rgb : texture(uProjectorImage[1], uv).rgb;
+}
+
+// Light arriving at P from light i before shadowing: radiance shaped by spot cone or projector
+// picture (seed 001 "Projekce": the picture rides on the light, the shadow map cuts it).
+vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
+    LightData light = uLights[i];
+    int type = lightType(i);
+    if (type == LIGHT_DIRECTIONAL) {
+        L = -light.directionFar.xyz;
+        return light.colorType.rgb;
+    }
+    vec3 toLight = light.positionNear.xyz - P;
+    L = normalize(toLight);
+    if (type == LIGHT_POINT) return light.colorType.rgb;
+    if (type == LIGHT_SPOT) {
+        float cosAngle = dot(-L, light.directionFar.xyz);
+        return light.colorType.rgb * smoothstep(light.cone.x, light.cone.y, cosAngle);
+    }
+    // Projector: look the picture up where the projector's frustum maps P.
+    vec4 s = light.shadowMatrix * vec4(P, 1.0);
+    vec2 uv = s.xy / s.w;
+    int slot = int(light.cone.z);
+    if (s.w <= 0.0 || slot < 0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
+    // Images are stored top row first: flip v so the picture lands upright.
+    return light.colorType.rgb * projectorTexel(slot, vec2(uv.x, 1.0 - uv.y));
+}
+
+void main() {
+    vec4 texel = materialTexel(vIn.uv);
+    float coverage = materialCoverage(texel);
+    vec3 albedo = uDiffuse * texel.rgb;
+    vec3 P = vIn.worldPos;
+    vec3 N = normalize(vIn.normal);
+    if (!gl_FrontFacing) N = -N;  // two-sided surfaces (planes, panes) light on both faces
+    vec3 V = normalize(uCameraPos - P);
+
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), debugVisibility = vec3(1.0);
+    for (int i = 0; i < uLightCount.x; ++i) {
+        vec3 L;
+        vec3 radiance = incidentRadiance(i, P, L);
+        float NdotL = dot(N, L);
+        vec3 visibility = shadowVisibility(i, P, N, NdotL);
+        if (i == uDebugLight) debugVisibility = visibility;
+        if (NdotL <= 0.0) continue;
+        vec3 H = normalize(L + V);
+        vec3 received = radiance * visibility;
+        diffuse += albedo * NdotL * received;
+        specular += uSpecular * pow(max(dot(N, H), 0.0), uShininess) * received;
+    }
+
+    if (uOutputMode == 1) { outColor = vec4(debugVisibility, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 2) { outColor = vec4(P, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 3) { outColor = vec4(N, 1.0); outTransmit = vec4(0.0); return; }
+
+    vec3 ambient = uAmbient * albedo;
+    if (uTranslucentPass == 0) {
+        outColor = vec4(ambient + diffuse + specular, 1.0);
+        outTransmit = vec4(0.0);
+        return;
+    }
+    // Translucent surface over what is behind it (dual-source blending: dst*transmit + src):
+    // the covered, non-transmitting share reflects; light passes with 1 - rho per channel.
+    vec3 stopped = materialStopped(coverage);
+    outColor = vec4((ambient + diffuse) * stopped + specular * coverage, 1.0);
+    outTransmit = vec4(vec3(1.0) - stopped, 1.0);
+}

@@ -1,0 +1,251 @@
+// The window front-end: GLFW input -> camera controller / renderer options; ImGui panel.
+#include "app/Viewer.h"
+
+#include "gl/Debug.h"
+#include "platform/EglContext.h"
+#include "platform/GlfwWindow.h"
+#include "render/Offscreen.h"
+#include "render/Renderer.h"
+#include "scene/CameraController.h"
+#include "scene/io/SceneFile.h"
+#include "util/Log.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <glm/gtx/rotate_vector.hpp>
+
+namespace penumbra::app {
+
+namespace {
+
+constexpr int kResolutionKeys[] = {256, 512, 1024, 2048, 4096};  // keys 1-5 (seed 002 §3.4)
+
+struct ViewerState {
+    bool animate = true;
+    bool showFps = true;
+    bool showPanel = true;
+    float time = 0.0f;
+    int selectedLight = 0;
+    bool screenshotRequested = false;
+    int screenshotCount = 0;
+    double fpsSmoothed = 0.0;
+};
+
+// Rotates a light: direction for directional lights, position around the scene centre otherwise.
+void moveLight(scene::Light& light, float yaw, float pitch, const glm::vec3& pivot) {
+    if (light.type == scene::Light::Type::Directional) {
+        glm::vec3 d = glm::rotate(light.direction, yaw, glm::vec3(0, 1, 0));
+        const glm::vec3 side = glm::normalize(glm::cross(d, glm::vec3(0, 1, 0)));
+        const glm::vec3 pitched = glm::rotate(d, pitch, side);
+        if (pitched.y < -0.05f) d = pitched;  // keep the sun above the horizon
+        light.direction = glm::normalize(d);
+        return;
+    }
+    glm::vec3 offset = glm::rotate(light.position - pivot, yaw, glm::vec3(0, 1, 0));
+    light.position = pivot + offset;
+    light.direction = glm::normalize(glm::rotate(light.direction, yaw, glm::vec3(0, 1, 0)));
+}
+
+void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraController& controller) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("penumbra", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    const render::PassTimes& t = renderer.lastTimes();
+    ImGui::Text("%.1f FPS | GPU ms: shadow %.2f, opaque %.2f, translucent %.2f, post %.2f", state.fpsSmoothed, t.shadowMs,
+                t.opaqueMs, t.translucentMs, t.postMs);
+    ImGui::Text("shadow memory %.2f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
+
+    const std::string current = renderer.technique().name();
+    if (ImGui::BeginCombo("technique", current.c_str())) {
+        for (const auto& info : shadows::techniqueRegistry())
+            if (ImGui::Selectable(info.name.c_str(), info.name == current)) {
+                try {
+                    renderer.setTechnique(info.name);
+                } catch (const std::exception& e) {
+                    log::error("{}", e.what());
+                }
+            }
+        ImGui::EndCombo();
+    }
+    int& res = renderer.options().shadowResolution;
+    ImGui::InputInt("shadow res (0: per light)", &res, 256, 1024);
+    res = std::clamp(res, 0, 8192);
+    for (const auto& p : renderer.technique().parameters()) ImGui::SliderFloat(p.name.c_str(), p.value, p.min, p.max);
+
+    ImGui::Checkbox("animate (space)", &state.animate);
+    ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
+    ImGui::Checkbox("debug maps overlay (o)", &renderer.options().debugOverlay);
+    int mode = static_cast<int>(controller.mode());
+    if (ImGui::Combo("camera (c)", &mode, "fly\0trackball\0orbit\0")) controller.setMode(static_cast<scene::Camera::Controller>(mode));
+
+    auto& lights = renderer.scene().lights;
+    if (!lights.empty()) {
+        state.selectedLight = std::clamp(state.selectedLight, 0, static_cast<int>(lights.size()) - 1);
+        if (ImGui::BeginCombo("light", lights[static_cast<std::size_t>(state.selectedLight)].name.c_str())) {
+            for (std::size_t i = 0; i < lights.size(); ++i)
+                if (ImGui::Selectable(lights[i].name.c_str(), static_cast<int>(i) == state.selectedLight))
+                    state.selectedLight = static_cast<int>(i);
+            ImGui::EndCombo();
+        }
+        scene::Light& l = lights[static_cast<std::size_t>(state.selectedLight)];
+        ImGui::ColorEdit3("colour", &l.color.x);
+        ImGui::SliderFloat("intensity", &l.intensity, 0.0f, 5.0f);
+        if (l.type == scene::Light::Type::Directional) {
+            if (ImGui::SliderFloat3("direction", &l.direction.x, -1.0f, 1.0f) && glm::length(l.direction) > 1e-3f)
+                l.direction = glm::normalize(l.direction);
+        } else {
+            ImGui::DragFloat3("position", &l.position.x, 0.05f);
+        }
+        ImGui::Checkbox("casts shadows", &l.shadow.enabled);
+        ImGui::SliderFloat("bias (texels)", &l.shadow.bias, 0.0f, 20.0f);
+        ImGui::SliderFloat("slope bias (texels)", &l.shadow.slopeBias, 0.0f, 10.0f);
+        ImGui::SliderFloat("normal offset (texels)", &l.shadow.normalOffset, 0.0f, 10.0f);
+        ImGui::SliderFloat2("polygon offset", &l.shadow.polygonOffset.x, 0.0f, 10.0f);
+    }
+    ImGui::TextUnformatted("WASD/QE move, right-drag look, arrows move light, 1-5 res, m fullscreen, n FPS, p screenshot");
+    ImGui::End();
+}
+
+void saveScreenshot(const ViewerOptions& opts, ViewerState& state, int w, int h) {
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h * 4), flipped(pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    const std::size_t row = static_cast<std::size_t>(w) * 4;
+    for (int y = 0; y < h; ++y) std::copy_n(&pixels[static_cast<std::size_t>(h - 1 - y) * row], row, &flipped[static_cast<std::size_t>(y) * row]);
+    char name[64];
+    std::snprintf(name, sizeof name, "screenshot_%03d.png", state.screenshotCount++);
+    const auto file = opts.screenshotDir / name;
+    render::writePng(file, w, h, flipped);
+    std::printf("penumbra: saved %s\n", file.string().c_str());
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& opts) {
+    scene::Scene scene = scene::io::loadScene(opts.scene);
+    platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
+    if (opts.debugContext) gl::enableDebugOutput();
+    log::info("window on {}", platform::glDeviceDescription());
+
+    render::RenderOptions ro;
+    ro.technique = !opts.technique.empty() ? opts.technique : (!scene.technique.empty() ? scene.technique : "hard");
+    ro.shadowResolution = opts.shadowResolution;
+    render::Renderer renderer(scene, ro);
+    scene::CameraController controller(scene.camera);
+    if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);
+    if (opts.controller == "orbit") controller.setMode(scene::Camera::Controller::Orbit);
+    const glm::vec3 pivot = scene.boundsAt(0.0f).center();
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+
+    ViewerState state;
+    GLFWwindow* win = window.handle();
+    glfwSetWindowUserPointer(win, &state);
+    auto previous = std::chrono::steady_clock::now();
+    double lastX = 0, lastY = 0;
+    glfwGetCursorPos(win, &lastX, &lastY);
+    int frame = 0;
+    bool keyWasDown[GLFW_KEY_LAST + 1] = {};
+    auto pressed = [&](int key) {  // edge-triggered key press
+        const bool down = glfwGetKey(win, key) == GLFW_PRESS;
+        const bool edge = down && !keyWasDown[key];
+        keyWasDown[key] = down;
+        return edge;
+    };
+
+    while (!window.shouldClose()) {
+        glfwPollEvents();
+        int w = 0, h = 0;
+        window.framebufferSize(w, h);
+        if (w == 0 || h == 0) {  // minimised: wait instead of spinning, draw nothing
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        const float dt = std::min(std::chrono::duration<float>(now - previous).count(), 0.25f);
+        previous = now;
+        state.fpsSmoothed = state.fpsSmoothed * 0.9 + (dt > 0 ? 0.1 / dt : 0.0);
+        if (state.animate) state.time += dt;
+
+        const ImGuiIO& io = ImGui::GetIO();
+        if (!io.WantCaptureKeyboard) {
+            if (pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(win, GLFW_TRUE);
+            if (pressed(GLFW_KEY_M)) window.toggleFullscreen();
+            if (pressed(GLFW_KEY_N)) state.showFps = !state.showFps;
+            if (pressed(GLFW_KEY_H)) state.showPanel = !state.showPanel;
+            if (pressed(GLFW_KEY_SPACE)) state.animate = !state.animate;
+            if (pressed(GLFW_KEY_O)) renderer.options().debugOverlay = !renderer.options().debugOverlay;
+            if (pressed(GLFW_KEY_P) || pressed(GLFW_KEY_F12)) state.screenshotRequested = true;
+            if (pressed(GLFW_KEY_C)) controller.setMode(static_cast<scene::Camera::Controller>((static_cast<int>(controller.mode()) + 1) % 3));
+            for (int k = 0; k < 5; ++k)
+                if (pressed(GLFW_KEY_1 + k)) renderer.options().shadowResolution = kResolutionKeys[k];
+            if (!scene.lights.empty()) {
+                const float yaw = (glfwGetKey(win, GLFW_KEY_RIGHT) - glfwGetKey(win, GLFW_KEY_LEFT)) * dt;
+                const float pitch = (glfwGetKey(win, GLFW_KEY_UP) - glfwGetKey(win, GLFW_KEY_DOWN)) * dt;
+                if (yaw != 0 || pitch != 0)
+                    moveLight(scene.lights[static_cast<std::size_t>(std::clamp(state.selectedLight, 0, int(scene.lights.size()) - 1))], yaw, pitch, pivot);
+            }
+        }
+        scene::ControllerInput input;
+        input.dt = dt;
+        input.viewport = {static_cast<float>(w), static_cast<float>(h)};
+        double x = 0, y = 0;
+        glfwGetCursorPos(win, &x, &y);
+        const bool dragging = !io.WantCaptureMouse && (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                                                       glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
+        if (dragging) input.dragPixels = {static_cast<float>(x - lastX), static_cast<float>(y - lastY)};
+        lastX = x;
+        lastY = y;
+        if (!io.WantCaptureKeyboard) {
+            input.move = {static_cast<float>(glfwGetKey(win, GLFW_KEY_D) - glfwGetKey(win, GLFW_KEY_A)),
+                          static_cast<float>(glfwGetKey(win, GLFW_KEY_E) - glfwGetKey(win, GLFW_KEY_Q)),
+                          static_cast<float>(glfwGetKey(win, GLFW_KEY_W) - glfwGetKey(win, GLFW_KEY_S))};
+            input.fast = glfwGetKey(win, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+        }
+        input.scroll = io.WantCaptureMouse ? 0.0f : io.MouseWheel;
+        controller.update(input);
+
+        try {
+            renderer.render(state.time, scene.camera, w, h, 0);
+        } catch (const std::exception& e) {
+            log::error("{}", e.what());
+            return 1;
+        }
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        if (state.showPanel) drawPanel(renderer, state, controller);
+        else if (state.showFps) {
+            ImGui::SetNextWindowPos(ImVec2(8, 8));
+            ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fpsSmoothed, renderer.lastTimes().totalMs());
+            ImGui::End();
+        }
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        // Scripted runs (--exit-after) leave a screenshot of their last frame as proof.
+        const bool lastFrame = opts.exitAfterFrames > 0 && ++frame >= opts.exitAfterFrames;
+        if (state.screenshotRequested || lastFrame) {
+            saveScreenshot(opts, state, w, h);  // before the swap: the back buffer is still ours
+            state.screenshotRequested = false;
+        }
+        window.swapBuffers();
+        if (lastFrame) break;
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    return 0;
+}
+
+}  // namespace penumbra::app

@@ -1,0 +1,24 @@
+#pragma once
+// KHR_debug hookup: driver messages go to the log; errors are counted so tests can assert
+// that a frame was clean.
+#include <epoxy/gl.h>
+#include <string>
+
+namespace penumbra::gl {
+
+void enableDebugOutput();
+int debugErrorCount();
+void resetDebugErrorCount();
+// Checks glGetError and throws std::runtime_error naming `where` if one is pending.
+void checkError(const char* where);
+
+// RAII debug group: shows up in apitrace/RenderDoc captures and debug logs.
+class DebugGroup {
+public:
+    explicit DebugGroup(const char* name);
+    ~DebugGroup();
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+};
+
+}  // namespace penumbra::gl

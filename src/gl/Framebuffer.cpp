@@ -1,0 +1,39 @@
+#include "gl/Framebuffer.h"
+
+#include <stdexcept>
+#include <vector>
+
+namespace penumbra::gl {
+
+Framebuffer::Framebuffer() {
+    GLuint id = 0;
+    glCreateFramebuffers(1, &id);
+    object_ = Object<detail::deleteFramebuffer>(id);
+}
+
+void Framebuffer::attach(GLenum attachment, const Texture& texture, int level) {
+    glNamedFramebufferTexture(id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::attachLayer(GLenum attachment, const Texture& texture, int layer, int level) {
+    glNamedFramebufferTextureLayer(id(), attachment, texture.id(), level, layer);
+}
+
+void Framebuffer::setDrawBuffers(std::initializer_list<GLenum> buffers) {
+    std::vector<GLenum> list(buffers);
+    glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(list.size()), list.data());
+}
+
+void Framebuffer::setNoColor() {
+    glNamedFramebufferDrawBuffer(id(), GL_NONE);
+    glNamedFramebufferReadBuffer(id(), GL_NONE);
+}
+
+void Framebuffer::checkComplete(const std::string& what) const {
+    const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error(what + ": framebuffer incomplete (status 0x" +
+                                 std::to_string(status) + ")");
+}
+
+}  // namespace penumbra::gl

@@ -1,0 +1,27 @@
+#pragma once
+#include "gl/Object.h"
+#include "gl/Texture.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace penumbra::gl {
+
+// A framebuffer object assembled from textures it does not own.
+class Framebuffer {
+public:
+    Framebuffer();
+    void attach(GLenum attachment, const Texture& texture, int level = 0);
+    void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);
+    void setDrawBuffers(std::initializer_list<GLenum> buffers);
+    void setNoColor();
+    // Throws std::runtime_error naming `what` when the framebuffer is incomplete.
+    void checkComplete(const std::string& what) const;
+    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
+    GLuint id() const { return object_.id(); }
+
+private:
+    Object<detail::deleteFramebuffer> object_;
+};
+
+}  // namespace penumbra::gl

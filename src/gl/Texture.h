@@ -1,0 +1,42 @@
+#pragma once
+#include "gl/Object.h"
+
+#include <cstddef>
+
+namespace penumbra::gl {
+
+// A texture with immutable storage. Created through the named constructors, which say
+// what the texture is for; memoryBytes() feeds the per-technique memory statistics.
+class Texture {
+public:
+    Texture() = default;
+    static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
+    static Texture create2DArray(GLenum internalFormat, int width, int height, int layers, int levels = 1);
+    static Texture createCube(GLenum internalFormat, int size);
+    static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
+
+    GLuint id() const { return object_.id(); }
+    GLenum target() const { return target_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::size_t memoryBytes() const { return bytes_; }
+
+    void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void setFilter(GLenum minFilter, GLenum magFilter);
+    void setWrap(GLenum wrap);
+    void setBorderColor(float r, float g, float b, float a);
+    // Hardware depth comparison (sampler*Shadow): GL_LEQUAL of reference vs stored depth.
+    void setDepthCompare(bool enabled);
+
+private:
+    Texture(GLenum target, GLuint id, int w, int h, std::size_t bytes);
+    Object<detail::deleteTexture> object_;
+    GLenum target_ = 0;
+    int width_ = 0, height_ = 0;
+    std::size_t bytes_ = 0;
+};
+
+// Bytes per texel of the internal formats this project uses (for memory statistics).
+std::size_t bytesPerTexel(GLenum internalFormat);
+
+}  // namespace penumbra::gl

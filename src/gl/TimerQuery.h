@@ -1,0 +1,20 @@
+#pragma once
+#include "gl/Object.h"
+
+namespace penumbra::gl {
+
+// GPU time of the commands between begin() and end() (GL_TIME_ELAPSED). Queries cannot nest,
+// so passes are timed one after another.
+class TimerQuery {
+public:
+    TimerQuery();
+    void begin() { glBeginQuery(GL_TIME_ELAPSED, object_.id()); }
+    void end() { glEndQuery(GL_TIME_ELAPSED); }
+    // Blocks until the result is available; returns milliseconds.
+    double milliseconds() const;
+
+private:
+    Object<detail::deleteQuery> object_;
+};
+
+}  // namespace penumbra::gl

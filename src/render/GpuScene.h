@@ -1,0 +1,47 @@
+#pragma once
+// The scene's meshes and images uploaded to the GPU, and the per-frame list of draws.
+#include "gl/Buffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "scene/Scene.h"
+
+#include <vector>
+
+namespace penumbra::render {
+
+struct Draw {
+    std::size_t object;
+    std::size_t mesh;
+    std::size_t part;
+    const scene::Material* material;
+    glm::mat4 model;
+    bool translucent;
+    bool castsShadow;
+    float viewDepth = 0;  // for back-to-front sorting of translucent draws
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(const scene::Scene& scene);
+
+    // All parts of all objects at `time`; translucent ones sorted back to front from `eye`.
+    std::vector<Draw> draws(float time, const glm::vec3& eye) const;
+    // Sets uModel and material uniforms on `program`, binds the texture, issues the draw.
+    void draw(const Draw& d, const gl::Program& program) const;
+    const gl::Texture& image(int index) const { return images_[static_cast<std::size_t>(index)]; }
+
+private:
+    struct GpuMesh {
+        gl::Buffer vertices, indices;
+        gl::VertexArray vao;
+    };
+    const scene::Scene& scene_;
+    std::vector<GpuMesh> meshes_;
+    std::vector<gl::Texture> images_;
+};
+
+// Uploads an RGBA8 image with mipmaps (sRGB when it holds colour).
+gl::Texture uploadImage(const scene::Image& image);
+
+}  // namespace penumbra::render

@@ -1,0 +1,30 @@
+#pragma once
+// An RGBA8 colour target for headless frames, and PNG output.
+#include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace penumbra::render {
+
+class OffscreenTarget {
+public:
+    OffscreenTarget(int width, int height);
+    GLuint framebuffer() const { return fbo_.id(); }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // RGBA8 pixels, top row first (image order).
+    std::vector<std::uint8_t> readRgba8() const;
+
+private:
+    int width_, height_;
+    gl::Texture color_;
+    gl::Framebuffer fbo_;
+};
+
+// Throws std::runtime_error naming the file when it cannot be written.
+void writePng(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgba);
+
+}  // namespace penumbra::render

@@ -1,0 +1,200 @@
+#include "render/Renderer.h"
+
+#include "gl/Debug.h"
+#include "render/Bindings.h"
+#include "render/LightBlock.h"
+#include "shadows/common/DepthAndTintMaps.h"
+#include "util/Log.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace penumbra::render {
+
+static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
+    return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
+                               .fragment = "shaders/passes/lighting.frag",
+                               .includeOverrides = {{"shadow_lookup.glsl", technique.lookupShader()}}});
+}
+
+Renderer::Renderer(scene::Scene& scene, RenderOptions options)
+    : scene_(scene), options_(std::move(options)), gpu_(scene), lightBlock_(sizeof(LightBlock), nullptr) {
+    if (scene_.lights.size() > static_cast<std::size_t>(kMaxLights))
+        throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
+                                    std::to_string(kMaxLights) + " are supported");
+    technique_ = shadows::createTechnique(options_.technique);
+    lighting_ = buildLighting(*technique_);
+    resolve_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/resolve.frag"});
+    overlay_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/overlay.frag"});
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    overlaySampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+void Renderer::setTechnique(const std::string& name) {
+    auto technique = shadows::createTechnique(name);
+    gl::Program lighting = buildLighting(*technique);
+    technique_ = std::move(technique);
+    lighting_ = std::move(lighting);
+    options_.technique = name;
+}
+
+void Renderer::setOutputMode(OutputMode mode, int debugLight) {
+    options_.output = mode;
+    options_.debugLight = debugLight;
+}
+
+int Renderer::effectiveResolution(const scene::Light& light) const {
+    return options_.shadowResolution > 0 ? options_.shadowResolution : light.shadow.resolution;
+}
+
+void Renderer::ensureTargets(int w, int h) {
+    if (w == targetW_ && h == targetH_) return;
+    hdr_ = gl::Texture::create2D(GL_RGBA32F, w, h);
+    depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
+    hdr_.setFilter(GL_NEAREST, GL_NEAREST);
+    depth_.setFilter(GL_NEAREST, GL_NEAREST);
+    hdrFbo_ = gl::Framebuffer();
+    hdrFbo_.attach(GL_COLOR_ATTACHMENT0, hdr_);
+    hdrFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    hdrFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    hdrFbo_.checkComplete("main colour target");
+    targetW_ = w;
+    targetH_ = h;
+}
+
+void Renderer::render(float time, const scene::Camera& camera, int width, int height, GLuint target) {
+    if (width <= 0 || height <= 0) return;  // minimised: nothing to draw into
+    ensureTargets(width, height);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const std::vector<Draw> draws = gpu_.draws(time, camera.position);
+
+    // Light spaces for this frame: objects move, so the directional fit follows them.
+    const scene::Bounds bounds = scene_.boundsAt(time);
+    std::vector<shadows::LightSpace> spaces;
+    for (const auto& light : scene_.lights)
+        spaces.push_back(shadows::computeLightSpace(light, effectiveResolution(light), bounds, camera, aspect));
+    const LightBlock block = packLights(scene_.lights, spaces, shadows::DepthAndTintMaps::slots(scene_.lights));
+    lightBlock_.update(0, sizeof(block), &block);
+    lightBlock_.bindBase(GL_UNIFORM_BUFFER, kLightBlockBinding);
+
+    glDisable(GL_CULL_FACE);  // planes and panes are single-sided geometry seen from both sides
+    {
+        gl::DebugGroup group("shadow maps");
+        timers_[0].begin();
+        shadows::ShadowFrame frame;
+        frame.lights = &scene_.lights;
+        frame.lightSpaces = &spaces;
+        frame.drawCasters = [&](const gl::Program& program, shadows::Casters casters) {
+            const bool wantTranslucent = casters == shadows::Casters::Translucent;
+            for (const Draw& d : draws)
+                if (d.castsShadow && d.translucent == wantTranslucent) gpu_.draw(d, program);
+        };
+        technique_->renderMaps(frame);
+        timers_[0].end();
+    }
+
+    hdrFbo_.bind();
+    glViewport(0, 0, width, height);
+    const bool shaded = options_.output == OutputMode::Shaded;
+    const glm::vec4 clear = shaded ? glm::vec4(scene_.background, 1.0f) : glm::vec4(0.0f);
+    glClearNamedFramebufferfv(hdrFbo_.id(), GL_COLOR, 0, &clear.x);
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(hdrFbo_.id(), GL_DEPTH, 0, &farDepth);
+    {
+        gl::DebugGroup group("opaque");
+        timers_[1].begin();
+        drawSurfaces(draws, false, camera, aspect);
+        timers_[1].end();
+    }
+    {
+        gl::DebugGroup group("translucent");
+        timers_[2].begin();
+        // Debug channels show the nearest opaque surface only.
+        if (shaded) drawSurfaces(draws, true, camera, aspect);
+        timers_[2].end();
+    }
+    {
+        gl::DebugGroup group("resolve");
+        timers_[3].begin();
+        resolve(target, width, height, camera, aspect);
+        if (options_.debugOverlay) drawOverlay(target, width, height);
+        timers_[3].end();
+    }
+    times_ = {timers_[0].milliseconds(), timers_[1].milliseconds(), timers_[2].milliseconds(), timers_[3].milliseconds()};
+}
+
+void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
+    lighting_.set("uViewProj", camera.projection(aspect) * camera.view());
+    lighting_.set("uCameraPos", camera.position);
+    lighting_.set("uAmbient", scene_.ambient);
+    lighting_.set("uTranslucentPass", translucent ? 1 : 0);
+    lighting_.set("uOutputMode", static_cast<int>(options_.output));
+    lighting_.set("uDebugLight", options_.debugLight);
+    technique_->bindLookup(lighting_);
+    int projector = 0;
+    for (const auto& light : scene_.lights)
+        if (light.type == scene::Light::Type::Projector && projector < kMaxProjectors)
+            gpu_.image(light.image).bind(kUnitProjector + static_cast<unsigned>(projector++));
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    if (translucent) {
+        // dst = src + dst * transmittance (per channel, second fragment output).
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+        glDepthMask(GL_FALSE);
+    }
+    for (const Draw& d : draws)
+        if (d.translucent == translucent) gpu_.draw(d, lighting_);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+}
+
+void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    const bool shaded = options_.output == OutputMode::Shaded;
+    resolve_.set("uInvProj", glm::inverse(camera.projection(aspect)));
+    resolve_.set("uBackground", scene_.background);
+    resolve_.set("uFog", glm::vec2(scene_.fog.start, scene_.fog.end));
+    resolve_.set("uFogEnabled", shaded && scene_.fog.enabled ? 1 : 0);
+    resolve_.set("uEncodeSrgb", shaded ? 1 : 0);
+    hdr_.bind(0);
+    depth_.bind(1);
+    resolve_.use();
+    emptyVao_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void Renderer::drawOverlay(GLuint target, int width, int height) {
+    const auto views = technique_->debugViews();
+    const int size = std::max(64, std::min(width, height) / 4);
+    int x = 8;
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    overlay_.use();
+    emptyVao_.bind();
+    glBindSampler(0, overlaySampler_.id());
+    for (const auto& view : views) {
+        if (view.target != GL_TEXTURE_2D || x + size > width) continue;
+        glViewport(x, 8, size, size);
+        glBindTextureUnit(0, view.texture);
+        overlay_.set("uIsDepth", view.depth ? 1 : 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        x += size + 8;
+    }
+    glBindSampler(0, 0);
+    glViewport(0, 0, width, height);
+}
+
+std::vector<float> Renderer::readLinear() const {
+    std::vector<float> pixels(static_cast<std::size_t>(targetW_) * targetH_ * 4);
+    glGetTextureImage(hdr_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
+    return pixels;
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,82 @@
+#pragma once
+// A frame is a list of passes: shadow maps (the technique's), opaque surfaces, translucent
+// surfaces back to front, then resolve (fog, clamp, sRGB) and debug overlays. Each pass is
+// timed with a GPU timer query.
+#include "gl/Buffer.h"
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "gl/TimerQuery.h"
+#include "gl/VertexArray.h"
+#include "render/GpuScene.h"
+#include "scene/Scene.h"
+#include "shadows/ShadowTechnique.h"
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace penumbra::render {
+
+enum class OutputMode { Shaded = 0, Visibility = 1, WorldPosition = 2, Normal = 3 };
+
+struct RenderOptions {
+    std::string technique = "hard";
+    int shadowResolution = 0;  // > 0 overrides every light's own resolution
+    bool debugOverlay = false;
+    OutputMode output = OutputMode::Shaded;
+    int debugLight = 0;  // which light OutputMode::Visibility shows
+};
+
+struct PassTimes {
+    double shadowMs = 0, opaqueMs = 0, translucentMs = 0, postMs = 0;
+    double totalMs() const { return shadowMs + opaqueMs + translucentMs + postMs; }
+};
+
+class Renderer {
+public:
+    // `scene` must outlive the renderer; lights may be edited between frames.
+    Renderer(scene::Scene& scene, RenderOptions options = {});
+
+    // Throws std::invalid_argument (unknown name) or gl::ShaderError; the old technique stays
+    // active when the new one fails.
+    void setTechnique(const std::string& name);
+    void setOutputMode(OutputMode mode, int debugLight = 0);
+    RenderOptions& options() { return options_; }
+    scene::Scene& scene() { return scene_; }
+    const shadows::ShadowTechnique& technique() const { return *technique_; }
+    shadows::ShadowTechnique& technique() { return *technique_; }
+
+    // Renders the frame at `time` into `targetFramebuffer` (0: the window) of width x height.
+    // A 0x0 size (minimised window) renders nothing.
+    void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer);
+
+    const PassTimes& lastTimes() const { return times_; }
+    std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
+    // The last frame's linear HDR colour (before fog and sRGB), RGBA floats, bottom row first.
+    std::vector<float> readLinear() const;
+    int effectiveResolution(const scene::Light& light) const;
+
+private:
+    void ensureTargets(int width, int height);
+    void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
+    void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
+    void drawOverlay(GLuint target, int width, int height);
+
+    scene::Scene& scene_;
+    RenderOptions options_;
+    GpuScene gpu_;
+    std::unique_ptr<shadows::ShadowTechnique> technique_;
+    gl::Program lighting_, resolve_, overlay_;
+    gl::Buffer lightBlock_;
+    gl::VertexArray emptyVao_;
+    gl::Object<gl::detail::deleteSampler> overlaySampler_;  // reads depth maps without comparison
+    // Float HDR colour + depth; 32-bit so that debug channels (positions) keep their precision.
+    gl::Texture hdr_, depth_;
+    gl::Framebuffer hdrFbo_;
+    int targetW_ = 0, targetH_ = 0;
+    std::array<gl::TimerQuery, 4> timers_;
+    PassTimes times_;
+};
+
+}  // namespace penumbra::render

@@ -1,0 +1,46 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace penumbra::scene {
+
+struct Bounds {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{std::numeric_limits<float>::lowest()};
+    bool empty() const { return min.x > max.x; }
+    void add(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void add(const Bounds& b) { if (!b.empty()) { add(b.min); add(b.max); } }
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    glm::vec3 extent() const { return max - min; }
+    Bounds transformed(const glm::mat4& m) const;
+};
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+
+// Triangles sharing one material.
+struct MeshPart {
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    int material = 0;  // index into Scene::materials
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::vector<MeshPart> parts;
+    Bounds bounds;
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    void computeBounds();
+};
+
+}  // namespace penumbra::scene

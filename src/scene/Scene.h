@@ -1,0 +1,54 @@
+#pragma once
+// A scene as data: meshes, materials, images, lights, camera, animated objects.
+// It knows nothing about GL or shadows; the renderer and the reference consume it.
+#include "scene/Animation.h"
+#include "scene/Camera.h"
+#include "scene/Image.h"
+#include "scene/Light.h"
+#include "scene/Material.h"
+#include "scene/Mesh.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace penumbra::scene {
+
+struct Object {
+    std::string name;
+    int mesh = 0;
+    int materialOverride = -1;  // replaces every part's material when >= 0
+    glm::vec3 position{0.0f};
+    glm::vec3 rotationDeg{0.0f};  // applied Z, then Y, then X... see transformAt
+    glm::vec3 scale{1.0f};
+    Animation animation;
+    bool castsShadow = true;
+
+    glm::mat4 transformAt(float time) const;
+};
+
+struct Fog {
+    bool enabled = false;
+    float start = 0.0f, end = 0.0f;  // distance from the camera
+};
+
+struct Scene {
+    std::filesystem::path source;  // file it came from (empty for code-built scenes)
+    Camera camera;
+    glm::vec3 ambient{0.08f};
+    glm::vec3 background{0.05f, 0.06f, 0.08f};
+    Fog fog;
+    std::string technique;  // preferred shadow technique, "" = the program's default
+    std::vector<Light> lights;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<Object> objects;
+
+    const Material& material(const Object& object, const MeshPart& part) const;
+    Bounds boundsAt(float time) const;  // world bounds of every object at `time`
+    std::size_t triangleCount() const;
+    bool animated() const;
+};
+
+}  // namespace penumbra::scene

@@ -1,0 +1,407 @@
+#include "scene/io/SceneFile.h"
+
+#include "scene/Shapes.h"
+#include "scene/io/ModelImporter.h"
+#include "util/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <glm/gtc/constants.hpp>
+#include <set>
+#include <sstream>
+
+namespace penumbra::scene::io {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// Reads one JSON scene document, remembering the file text so that messages can name the line
+// of an offending key (nlohmann's DOM keeps no positions; the key's first occurrence is used).
+class Reader {
+public:
+    Reader(const std::string& text, fs::path file) : text_(text), file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& key, const std::string& what) const {
+        throw InputError(file_, lineOf(key), (path.empty() ? "" : path + ": ") + what);
+    }
+
+    void allowKeys(const json& obj, const std::string& path, std::initializer_list<const char*> keys) const {
+        if (!obj.is_object()) fail(path, "", "expected an object, got " + std::string(obj.type_name()));
+        const std::set<std::string> allowed(keys.begin(), keys.end());
+        for (const auto& [k, v] : obj.items()) {
+            if (allowed.count(k)) continue;
+            std::string msg = "unknown key '" + k + "'";
+            if (auto guess = closest(k, allowed); !guess.empty()) msg += " (did you mean '" + guess + "'?)";
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            fail(path, k, msg + "; allowed: " + list);
+        }
+    }
+
+    float number(const json& obj, const char* key, const std::string& path, float fallback) const {
+        if (!obj.contains(key)) return fallback;
+        const json& v = obj.at(key);
+        if (!v.is_number()) fail(path, key, std::string("'") + key + "' must be a number, got " + v.type_name());
+        const double d = v.get<double>();
+        if (!std::isfinite(d)) fail(path, key, std::string("'") + key + "' is not finite");
+        return static_cast<float>(d);
+    }
+
+    float positive(const json& obj, const char* key, const std::string& path, float fallback) const {
+        const float v = number(obj, key, path, fallback);
+        if (!(v > 0)) fail(path, key, std::string("'") + key + "' must be > 0");
+        return v;
+    }
+
+    glm::vec3 vec3(const json& obj, const char* key, const std::string& path, glm::vec3 fallback) const {
+        if (!obj.contains(key)) return fallback;
+        return vec3Value(obj.at(key), key, path);
+    }
+
+    glm::vec3 vec3Value(const json& v, const char* key, const std::string& path) const {
+        if (v.is_number()) {
+            const float f = v.get<float>();
+            return glm::vec3(f);
+        }
+        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); }))
+            fail(path, key, std::string("'") + key + "' must be an array of 3 numbers");
+        return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+    }
+
+    std::string string(const json& obj, const char* key, const std::string& path, const std::string& fallback) const {
+        if (!obj.contains(key)) return fallback;
+        if (!obj.at(key).is_string()) fail(path, key, std::string("'") + key + "' must be a string");
+        return obj.at(key).get<std::string>();
+    }
+
+    template <class E>
+    E choice(const json& obj, const char* key, const std::string& path, E fallback,
+             std::initializer_list<std::pair<const char*, E>> options) const {
+        if (!obj.contains(key)) return fallback;
+        const std::string s = string(obj, key, path, "");
+        std::string list;
+        for (const auto& [name, value] : options) {
+            if (s == name) return value;
+            list += (list.empty() ? "" : ", ") + std::string(name);
+        }
+        fail(path, s, "'" + std::string(key) + "' is '" + s + "'; expected one of: " + list);
+    }
+
+    fs::path resolve(const std::string& rel) const { return file_.parent_path() / rel; }
+    const fs::path& file() const { return file_; }
+
+    int lineOf(const std::string& key) const {
+        if (key.empty()) return 0;
+        const std::size_t pos = text_.find("\"" + key + "\"");
+        if (pos == std::string::npos) return 0;
+        return 1 + static_cast<int>(std::count(text_.begin(), text_.begin() + static_cast<long>(pos), '\n'));
+    }
+
+private:
+    static std::string closest(const std::string& k, const std::set<std::string>& allowed) {
+        std::string best;
+        std::size_t bestDist = 3;  // suggest only near misses
+        for (const auto& a : allowed) {
+            const std::size_t d = editDistance(k, a);
+            if (d < bestDist) { bestDist = d; best = a; }
+        }
+        return best;
+    }
+    static std::size_t editDistance(const std::string& a, const std::string& b) {
+        std::vector<std::size_t> row(b.size() + 1);
+        for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+        for (std::size_t i = 1; i <= a.size(); ++i) {
+            std::size_t prev = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= b.size(); ++j) {
+                const std::size_t cur = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, prev + (a[i - 1] == b[j - 1] ? 0 : 1)});
+                prev = cur;
+            }
+        }
+        return row[b.size()];
+    }
+
+    const std::string& text_;
+    fs::path file_;
+};
+
+void readCamera(const Reader& r, const json& j, Camera& cam) {
+    const std::string p = "camera";
+    r.allowKeys(j, p, {"position", "target", "up", "fov_deg", "near", "far", "controller"});
+    cam.position = r.vec3(j, "position", p, cam.position);
+    cam.target = r.vec3(j, "target", p, cam.target);
+    cam.up = r.vec3(j, "up", p, cam.up);
+    cam.fovDeg = r.positive(j, "fov_deg", p, cam.fovDeg);
+    cam.near = r.positive(j, "near", p, cam.near);
+    cam.far = r.positive(j, "far", p, cam.far);
+    if (cam.far <= cam.near) r.fail(p, "far", "'far' must be greater than 'near'");
+    if (cam.fovDeg >= 179.0f) r.fail(p, "fov_deg", "'fov_deg' must be below 179");
+    if (glm::length(cam.position - cam.target) <= 0) r.fail(p, "target", "'target' equals 'position'");
+    cam.controller = r.choice(j, "controller", p, cam.controller,
+                              {{"fly", Camera::Controller::Fly},
+                               {"trackball", Camera::Controller::Trackball},
+                               {"orbit", Camera::Controller::Orbit}});
+}
+
+ShadowSettings readShadow(const Reader& r, const json& j, const std::string& p) {
+    r.allowKeys(j, p, {"enabled", "resolution", "bias", "slope_bias", "normal_offset", "polygon_offset"});
+    ShadowSettings s;
+    if (j.contains("enabled")) {
+        if (!j["enabled"].is_boolean()) r.fail(p, "enabled", "'enabled' must be true or false");
+        s.enabled = j["enabled"].get<bool>();
+    }
+    s.resolution = static_cast<int>(r.number(j, "resolution", p, static_cast<float>(s.resolution)));
+    if (s.resolution < 16 || s.resolution > 16384) r.fail(p, "resolution", "'resolution' must be within 16..16384");
+    s.bias = r.number(j, "bias", p, s.bias);
+    s.slopeBias = r.number(j, "slope_bias", p, s.slopeBias);
+    s.normalOffset = r.number(j, "normal_offset", p, s.normalOffset);
+    if (j.contains("polygon_offset")) {
+        const json& po = j["polygon_offset"];
+        if (!po.is_array() || po.size() != 2 || !po[0].is_number() || !po[1].is_number())
+            r.fail(p, "polygon_offset", "'polygon_offset' must be [factor, units]");
+        s.polygonOffset = {po[0].get<float>(), po[1].get<float>()};
+    }
+    return s;
+}
+
+void readLight(const Reader& r, const json& j, const std::string& p, Scene& scene) {
+    r.allowKeys(j, p, {"type", "name", "color", "intensity", "direction", "position", "angle_deg", "image", "shadow",
+                       "size", "near", "range"});
+    Light l;
+    if (!j.contains("type")) r.fail(p, "", "a light needs a 'type'");
+    l.type = r.choice(j, "type", p, l.type,
+                      {{"directional", Light::Type::Directional}, {"spot", Light::Type::Spot},
+                       {"point", Light::Type::Point}, {"projector", Light::Type::Projector}});
+    l.name = r.string(j, "name", p, std::string(toString(l.type)) + " " + std::to_string(scene.lights.size()));
+    l.color = r.vec3(j, "color", p, l.color);
+    l.intensity = r.number(j, "intensity", p, l.intensity);
+    l.position = r.vec3(j, "position", p, l.position);
+    l.direction = r.vec3(j, "direction", p, l.direction);
+    if (glm::length(l.direction) < 1e-6f) r.fail(p, "direction", "'direction' must not be zero");
+    l.direction = glm::normalize(l.direction);
+    l.angleDeg = r.positive(j, "angle_deg", p, l.angleDeg);
+    if (l.angleDeg >= 170.0f) r.fail(p, "angle_deg", "'angle_deg' must be below 170");
+    l.size = r.number(j, "size", p, l.size);
+    l.near = r.positive(j, "near", p, l.near);
+    l.range = r.positive(j, "range", p, l.range);
+    if (l.type == Light::Type::Directional && !j.contains("direction"))
+        r.fail(p, "type", "a directional light needs a 'direction'");
+    if ((l.type == Light::Type::Spot || l.type == Light::Type::Projector || l.type == Light::Type::Point) &&
+        !j.contains("position"))
+        r.fail(p, "type", std::string("a ") + toString(l.type) + " light needs a 'position'");
+    if (l.type == Light::Type::Projector) {
+        if (!j.contains("image")) r.fail(p, "type", "a projector needs an 'image'");
+        scene.images.push_back(loadImageOrChecker(r.resolve(r.string(j, "image", p, "")), r.file().string()));
+        l.image = static_cast<int>(scene.images.size()) - 1;
+    }
+    if (j.contains("shadow")) l.shadow = readShadow(r, j["shadow"], p + ".shadow");
+    scene.lights.push_back(l);
+}
+
+int readMaterial(const Reader& r, const json& j, const std::string& p, Scene& scene) {
+    r.allowKeys(j, p, {"name", "diffuse", "specular", "shininess", "texture", "alpha", "transmission", "alpha_cutoff",
+                       "double_sided"});
+    Material m;
+    m.name = r.string(j, "name", p, p);
+    m.diffuse = r.vec3(j, "diffuse", p, m.diffuse);
+    m.specular = r.vec3(j, "specular", p, m.specular);
+    m.shininess = r.positive(j, "shininess", p, m.shininess);
+    m.alpha = r.number(j, "alpha", p, m.alpha);
+    if (m.alpha < 0 || m.alpha > 1) r.fail(p, "alpha", "'alpha' (coverage) must be within 0..1");
+    m.transmission = r.vec3(j, "transmission", p, m.transmission);
+    if (glm::any(glm::lessThan(m.transmission, glm::vec3(0))) || glm::any(glm::greaterThan(m.transmission, glm::vec3(1))))
+        r.fail(p, "transmission", "'transmission' must be within 0..1 per channel");
+    m.alphaCutoff = r.number(j, "alpha_cutoff", p, m.alphaCutoff);
+    if (j.contains("double_sided")) m.doubleSided = j["double_sided"].is_boolean() && j["double_sided"].get<bool>();
+    if (j.contains("texture")) {
+        scene.images.push_back(loadImageOrChecker(r.resolve(r.string(j, "texture", p, "")), r.file().string()));
+        m.diffuseTexture = static_cast<int>(scene.images.size()) - 1;
+    }
+    scene.materials.push_back(m);
+    return static_cast<int>(scene.materials.size()) - 1;
+}
+
+Track readTrack(const Reader& r, const json& keys, const std::string& p, const char* key) {
+    if (!keys.is_array() || keys.empty()) r.fail(p, key, "keyframes must be a non-empty array of [t, x, y, z]");
+    std::vector<Keyframe> out;
+    for (const auto& k : keys) {
+        if (!k.is_array() || k.size() != 4 || !std::all_of(k.begin(), k.end(), [](const json& e) { return e.is_number(); }))
+            r.fail(p, key, "each keyframe must be [t, x, y, z]");
+        out.push_back({k[0].get<float>(), {k[1].get<float>(), k[2].get<float>(), k[3].get<float>()}});
+    }
+    try {
+        return Track(std::move(out));
+    } catch (const std::invalid_argument& e) {
+        r.fail(p, key, e.what());
+    }
+}
+
+Animation readAnimation(const Reader& r, const json& j, const std::string& p) {
+    Animation a;
+    if (j.is_array()) {
+        a.position = readTrack(r, j, p, "animation");
+        return a;
+    }
+    r.allowKeys(j, p, {"position", "rotation_deg"});
+    if (j.contains("position")) a.position = readTrack(r, j["position"], p + ".position", "position");
+    if (j.contains("rotation_deg")) a.rotationDeg = readTrack(r, j["rotation_deg"], p + ".rotation_deg", "rotation_deg");
+    return a;
+}
+
+void readObject(const Reader& r, const json& j, const std::string& p, Scene& scene) {
+    r.allowKeys(j, p, {"name", "model", "shape", "size", "radius", "position", "rotation_deg", "scale", "material",
+                       "animation", "cast_shadows"});
+    Object o;
+    const bool hasModel = j.contains("model"), hasShape = j.contains("shape");
+    if (hasModel == hasShape) r.fail(p, "", "an object needs exactly one of 'model' or 'shape'");
+    if (hasModel) {
+        o.mesh = importModel(r.resolve(r.string(j, "model", p, "")), scene);
+        o.name = r.string(j, "name", p, fs::path(r.string(j, "model", p, "")).stem().string());
+    } else {
+        const std::string shape = r.string(j, "shape", p, "");
+        Mesh mesh;
+        if (shape == "plane") {
+            glm::vec2 size{10.0f};
+            if (j.contains("size")) {
+                const json& s = j["size"];
+                if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
+                    r.fail(p, "size", "a plane's 'size' is [x, z]");
+                size = {s[0].get<float>(), s[1].get<float>()};
+            }
+            mesh = shapes::plane(size.x, size.y);
+        } else if (shape == "box") {
+            mesh = shapes::box(r.vec3(j, "size", p, glm::vec3(1.0f)));
+        } else if (shape == "sphere") {
+            mesh = shapes::sphere(r.positive(j, "radius", p, 0.5f));
+        } else {
+            r.fail(p, "shape", "unknown shape '" + shape + "'; expected one of: plane, box, sphere");
+        }
+        scene.materials.push_back(Material{});
+        mesh.parts[0].material = static_cast<int>(scene.materials.size()) - 1;
+        scene.meshes.push_back(std::move(mesh));
+        o.mesh = static_cast<int>(scene.meshes.size()) - 1;
+        o.name = r.string(j, "name", p, shape);
+    }
+    o.position = r.vec3(j, "position", p, o.position);
+    o.rotationDeg = r.vec3(j, "rotation_deg", p, o.rotationDeg);
+    o.scale = r.vec3(j, "scale", p, o.scale);
+    if (j.contains("material")) o.materialOverride = readMaterial(r, j["material"], p + ".material", scene);
+    if (j.contains("animation")) o.animation = readAnimation(r, j["animation"], p + ".animation");
+    if (j.contains("cast_shadows")) o.castsShadow = j["cast_shadows"].is_boolean() && j["cast_shadows"].get<bool>();
+    scene.objects.push_back(std::move(o));
+}
+
+// nlohmann reports a byte offset; turn it into line:column of the file.
+std::string parseErrorLocation(const std::string& text, std::size_t byte, int& line) {
+    byte = std::min(byte, text.size());
+    line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(byte), '\n'));
+    const std::size_t lineStart = text.rfind('\n', byte > 0 ? byte - 1 : 0);
+    const std::size_t col = lineStart == std::string::npos ? byte : byte - lineStart - 1;
+    return std::to_string(col);
+}
+
+}  // namespace
+
+Scene parseSceneJson(const std::string& text, const fs::path& file) {
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        int line = 0;
+        const std::string col = parseErrorLocation(text, e.byte > 0 ? e.byte - 1 : 0, line);
+        std::string what = e.what();
+        if (auto pos = what.find("syntax error"); pos != std::string::npos) what = what.substr(pos);
+        throw InputError(file, line, "column " + col + ": invalid JSON: " + what);
+    }
+    const Reader r(text, file);
+    r.allowKeys(doc, "", {"name", "description", "camera", "ambient", "background", "fog", "lights", "objects",
+                          "technique"});
+    Scene scene;
+    scene.source = file;
+    if (doc.contains("camera")) readCamera(r, doc["camera"], scene.camera);
+    scene.ambient = r.vec3(doc, "ambient", "", scene.ambient);
+    scene.background = r.vec3(doc, "background", "", scene.background);
+    scene.technique = r.string(doc, "technique", "", "");
+    if (doc.contains("fog")) {
+        r.allowKeys(doc["fog"], "fog", {"start", "end"});
+        scene.fog.enabled = true;
+        scene.fog.start = r.number(doc["fog"], "start", "fog", scene.camera.far * 0.7f);
+        scene.fog.end = r.number(doc["fog"], "end", "fog", scene.camera.far);
+        if (scene.fog.end <= scene.fog.start) r.fail("fog", "end", "'end' must be greater than 'start'");
+    }
+    if (doc.contains("lights")) {
+        if (!doc["lights"].is_array()) r.fail("", "lights", "'lights' must be an array");
+        for (std::size_t i = 0; i < doc["lights"].size(); ++i)
+            readLight(r, doc["lights"][i], "lights[" + std::to_string(i) + "]", scene);
+    }
+    if (!doc.contains("objects") || !doc["objects"].is_array() || doc["objects"].empty())
+        r.fail("", "objects", "a scene needs a non-empty 'objects' array");
+    for (std::size_t i = 0; i < doc["objects"].size(); ++i)
+        readObject(r, doc["objects"][i], "objects[" + std::to_string(i) + "]", scene);
+    return scene;
+}
+
+Scene wrapModel(const fs::path& modelFile) {
+    Scene scene;
+    scene.source = modelFile;
+    Object model;
+    model.mesh = importModel(modelFile, scene);
+    model.name = modelFile.stem().string();
+    scene.objects.push_back(model);
+
+    const Bounds b = scene.meshes[0].bounds;
+    const glm::vec3 c = b.center();
+    const float radius = std::max(glm::length(b.extent()) * 0.5f, 1e-3f);
+    // Ground just under the model, large enough to catch its shadow.
+    Mesh ground = shapes::plane(radius * 8.0f, radius * 8.0f);
+    scene.materials.push_back(Material{.name = "ground", .diffuse = glm::vec3(0.7f)});
+    ground.parts[0].material = static_cast<int>(scene.materials.size()) - 1;
+    scene.meshes.push_back(std::move(ground));
+    Object groundObject;
+    groundObject.name = "ground";
+    groundObject.mesh = 1;
+    groundObject.position = {c.x, b.min.y - radius * 0.002f, c.z};
+    scene.objects.push_back(groundObject);
+
+    Light sun;
+    sun.name = "sun";
+    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    sun.intensity = 1.0f;
+    scene.lights.push_back(sun);
+    scene.ambient = glm::vec3(0.15f);
+
+    // Frame the bounding sphere: distance so that it fills ~80% of the vertical field of view,
+    // looking slightly down from above the ground.
+    Camera& cam = scene.camera;
+    const float distance = radius / std::sin(glm::radians(cam.fovDeg) * 0.4f);
+    cam.target = c;
+    cam.position = c + glm::normalize(glm::vec3(0.6f, 0.45f, 1.0f)) * distance;
+    cam.position.y = std::max(cam.position.y, b.min.y + radius * 0.2f);
+    cam.near = distance * 0.01f;
+    cam.far = distance * 20.0f;
+    return scene;
+}
+
+Scene loadScene(const fs::path& path) {
+    if (!fs::exists(path)) throw InputError(path, "file not found");
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+    if (ext != ".json") return wrapModel(path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "cannot open scene file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parseSceneJson(ss.str(), path);
+}
+
+fs::path defaultScenePath() {
+    if (const char* env = std::getenv("PENUMBRA_SCENE_DIR")) return fs::path(env) / "default.json";
+    return fs::path(PENUMBRA_SCENE_DIR) / "default.json";
+}
+
+}  // namespace penumbra::scene::io

@@ -1,0 +1,115 @@
+#include "shadows/LightSpace.h"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace penumbra::shadows {
+
+using scene::Light;
+
+// Maps clip space [-1,1]^3 to texture space [0,1]^3.
+static const glm::mat4 kClipToTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
+                                        glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+static glm::vec3 anyPerpendicular(const glm::vec3& d) {
+    return std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+}
+
+static std::array<glm::vec3, 8> frustumCorners(const scene::Camera& camera, float aspect, float farDistance) {
+    const glm::mat4 invViewProj =
+        glm::inverse(glm::perspective(glm::radians(camera.fovDeg), aspect, camera.near, farDistance) * camera.view());
+    std::array<glm::vec3, 8> corners{};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 ndc{(i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f};
+        const glm::vec4 w = invViewProj * ndc;
+        corners[static_cast<std::size_t>(i)] = glm::vec3(w) / w.w;
+    }
+    return corners;
+}
+
+static LightSpace directional(const Light& light, int res, const scene::Bounds& bounds, const scene::Camera& camera,
+                              float aspect) {
+    LightSpace ls;
+    const glm::vec3 center = bounds.center();
+    const float radius = std::max(glm::length(bounds.extent()) * 0.5f, 1e-3f);
+    const glm::mat4 view = glm::lookAt(center - light.direction * radius * 2.0f, center, anyPerpendicular(light.direction));
+
+    const scene::Bounds sceneLs = bounds.transformed(view);
+    // What the camera can see, no further than the scene reaches.
+    const float farDistance = std::min(camera.far, glm::length(camera.position - center) + radius);
+    scene::Bounds viewLs;
+    for (const auto& c : frustumCorners(camera, aspect, std::max(farDistance, camera.near * 2.0f)))
+        viewLs.add(glm::vec3(view * glm::vec4(c, 1.0f)));
+    glm::vec2 lo = glm::max(glm::vec2(sceneLs.min), glm::vec2(viewLs.min));
+    glm::vec2 hi = glm::min(glm::vec2(sceneLs.max), glm::vec2(viewLs.max));
+    if (lo.x >= hi.x || lo.y >= hi.y) {  // camera looks away from everything: cover the scene
+        lo = glm::vec2(sceneLs.min);
+        hi = glm::vec2(sceneLs.max);
+    }
+    // A small margin so that geometry on the box faces is not clipped.
+    const float margin = 1e-3f * radius;
+    const float zNear = -sceneLs.max.z - margin, zFar = -sceneLs.min.z + margin;
+    const glm::mat4 proj = glm::ortho(lo.x - margin, hi.x + margin, lo.y - margin, hi.y + margin, zNear, zFar);
+    ls.type = Light::Type::Directional;
+    ls.resolution = res;
+    ls.perspective = false;
+    ls.near = zNear;
+    ls.far = zFar;
+    ls.texelScale = std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(res);
+    ls.viewProj[0] = proj * view;
+    ls.shadowMatrix = kClipToTexture * ls.viewProj[0];
+    return ls;
+}
+
+static LightSpace cone(const Light& light, int res) {
+    LightSpace ls;
+    const float fov = glm::radians(light.angleDeg);
+    const glm::mat4 view = glm::lookAt(light.position, light.position + light.direction, anyPerpendicular(light.direction));
+    ls.type = light.type;
+    ls.resolution = res;
+    ls.perspective = true;
+    ls.near = light.near;
+    ls.far = light.range;
+    ls.texelScale = 2.0f * std::tan(fov * 0.5f) / static_cast<float>(res);
+    ls.viewProj[0] = glm::perspective(fov, 1.0f, light.near, light.range) * view;
+    ls.shadowMatrix = kClipToTexture * ls.viewProj[0];
+    return ls;
+}
+
+std::array<glm::mat4, 6> cubeFaceViews(const glm::vec3& p) {
+    // GL cube map conventions (OpenGL 4.5 spec table 8.19).
+    return {glm::lookAt(p, p + glm::vec3(1, 0, 0), glm::vec3(0, -1, 0)),
+            glm::lookAt(p, p + glm::vec3(-1, 0, 0), glm::vec3(0, -1, 0)),
+            glm::lookAt(p, p + glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)),
+            glm::lookAt(p, p + glm::vec3(0, -1, 0), glm::vec3(0, 0, -1)),
+            glm::lookAt(p, p + glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)),
+            glm::lookAt(p, p + glm::vec3(0, 0, -1), glm::vec3(0, -1, 0))};
+}
+
+static LightSpace point(const Light& light, int res) {
+    LightSpace ls;
+    ls.type = Light::Type::Point;
+    ls.resolution = res;
+    ls.perspective = true;
+    ls.near = light.near;
+    ls.far = light.range;
+    ls.faceCount = 6;
+    ls.texelScale = 2.0f / static_cast<float>(res);
+    const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, light.near, light.range);
+    const auto views = cubeFaceViews(light.position);
+    for (std::size_t f = 0; f < 6; ++f) ls.viewProj[f] = proj * views[f];
+    return ls;
+}
+
+LightSpace computeLightSpace(const Light& light, int resolution, const scene::Bounds& bounds,
+                             const scene::Camera& camera, float aspect) {
+    switch (light.type) {
+        case Light::Type::Directional: return directional(light, resolution, bounds, camera, aspect);
+        case Light::Type::Spot:
+        case Light::Type::Projector: return cone(light, resolution);
+        case Light::Type::Point: return point(light, resolution);
+    }
+    return {};
+}
+
+}  // namespace penumbra::shadows

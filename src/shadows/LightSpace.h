@@ -1,0 +1,36 @@
+#pragma once
+// Where each light's shadow map looks: view-projection matrices, depth range and the world size
+// of one shadow-map texel. Shared by every technique; computed once per light per frame.
+#include "scene/Camera.h"
+#include "scene/Light.h"
+#include "scene/Mesh.h"
+
+#include <array>
+#include <glm/glm.hpp>
+
+namespace penumbra::shadows {
+
+struct LightSpace {
+    scene::Light::Type type = scene::Light::Type::Directional;
+    int resolution = 2048;
+    bool perspective = false;
+    float near = 0.0f, far = 1.0f;  // depth range of the projection(s)
+    // World size of one texel: at unit distance along the view axis when perspective,
+    // everywhere when orthographic.
+    float texelScale = 0.0f;
+    int faceCount = 1;                      // 6 for point lights (cube map)
+    std::array<glm::mat4, 6> viewProj{};    // world -> clip, per face
+    glm::mat4 shadowMatrix{1.0f};           // world -> [0,1]^3 texture space (2D lights)
+};
+
+// Directional lights get an orthographic box that holds every caster in the scene bounds and,
+// across the light, only what the camera frustum can see (casters behind receivers along the
+// light stay in, since they lie in the same light-space column). Spot and projector lights use
+// their cone; point lights the six cube faces.
+LightSpace computeLightSpace(const scene::Light& light, int resolution, const scene::Bounds& sceneBounds,
+                             const scene::Camera& camera, float aspect);
+
+// The six view matrices of a cube map, in GL's face order (+X, -X, +Y, -Y, +Z, -Z).
+std::array<glm::mat4, 6> cubeFaceViews(const glm::vec3& position);
+
+}  // namespace penumbra::shadows

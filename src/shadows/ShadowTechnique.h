@@ -1,0 +1,74 @@
+#pragma once
+// One shadow technique = data (its maps) + passes (renderMaps) + a GLSL lookup that the
+// lighting shader includes as "shadow_lookup.glsl", defining
+//     vec3 shadowVisibility(int light, vec3 worldPos, vec3 worldNormal, float NdotL);
+// (rgb: coloured visibility, 1 = fully lit). Adding a technique = a folder here + one line in
+// Registry.cpp.
+#include "gl/Program.h"
+#include "shadows/LightSpace.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace penumbra::shadows {
+
+// Which casters a pass wants. Opaque casters block; translucent ones (coverage < 1 or
+// transmission > 0) tint (SPEC §4).
+enum class Casters { Opaque, Translucent };
+
+// What the renderer gives a technique for one frame.
+struct ShadowFrame {
+    const std::vector<scene::Light>* lights = nullptr;
+    const std::vector<LightSpace>* lightSpaces = nullptr;  // one per light
+    // Draws the chosen casters with `program` bound (uModel and material uniforms are set,
+    // the diffuse texture is on unit 0); the caller sets the light's matrices.
+    std::function<void(const gl::Program& program, Casters casters)> drawCasters;
+};
+
+// A texture worth showing in the debug overlay.
+struct DebugView {
+    std::string label;
+    GLuint texture = 0;
+    GLenum target = GL_TEXTURE_2D;
+    bool depth = false;  // show as linearised grey
+    int layer = 0;
+};
+
+// A live, typed knob (UI slider, CLI --param name=value).
+struct Parameter {
+    std::string name;
+    float* value;
+    float min, max;
+};
+
+class ShadowTechnique {
+public:
+    virtual ~ShadowTechnique() = default;
+    virtual std::string name() const = 0;
+    // GLSL file (relative to the source root) that defines shadowVisibility().
+    virtual std::filesystem::path lookupShader() const = 0;
+    // Re-renders every light's maps (called every frame).
+    virtual void renderMaps(const ShadowFrame& frame) = 0;
+    // Binds textures and sets uniforms the lookup needs on the lighting program.
+    virtual void bindLookup(const gl::Program& lighting) const = 0;
+    virtual std::size_t memoryBytes() const = 0;
+    virtual std::vector<DebugView> debugViews() const { return {}; }
+    virtual std::vector<Parameter> parameters() { return {}; }
+};
+
+struct TechniqueInfo {
+    std::string name;
+    std::string description;
+    std::function<std::unique_ptr<ShadowTechnique>()> create;
+};
+
+const std::vector<TechniqueInfo>& techniqueRegistry();
+// Throws std::invalid_argument listing the known names when `name` is unknown.
+std::unique_ptr<ShadowTechnique> createTechnique(const std::string& name);
+std::string knownTechniqueNames();
+
+}  // namespace penumbra::shadows

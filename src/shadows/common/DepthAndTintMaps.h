@@ -1,0 +1,44 @@
+#pragma once
+// Per-light storage most shadow-map techniques share: an opaque-caster depth map (2D or cube)
+// and a transmittance ("tint") map of translucent casters in front of it (seed 001's
+// per-light colour buffer). Reallocated when a light's resolution changes; both are
+// re-rendered every frame.
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "shadows/ShadowTechnique.h"
+
+#include <vector>
+
+namespace penumbra::shadows {
+
+class DepthAndTintMaps {
+public:
+    struct LightMaps {
+        int resolution = 0;
+        bool cube = false;
+        gl::Texture depth;  // DEPTH_COMPONENT32F, hardware compare enabled
+        gl::Texture tint;   // RGBA16F: rgb transmittance, a nearest translucent depth
+        std::vector<gl::Framebuffer> faces;  // one per cube face, or one
+    };
+
+    DepthAndTintMaps();
+    void render(const ShadowFrame& frame);
+    // Binds light `i`'s maps to the 2D / cube units of its slot (see shaders/common/bindings.glsl).
+    void bind(const gl::Program& lighting) const;
+    // Shadow slot per light (-1: none) in the order the renderer gives lights; also in the light UBO.
+    static std::vector<int> slots(const std::vector<scene::Light>& lights);
+    std::size_t memoryBytes() const;
+    std::vector<DebugView> debugViews() const;
+    void setFiltering(GLenum filter);  // GL_NEAREST (hard) or GL_LINEAR (hardware 2x2 PCF)
+
+private:
+    void ensure(std::size_t light, int resolution, bool cube);
+    std::vector<LightMaps> maps_;
+    std::vector<int> slots_;
+    std::vector<bool> cube_;
+    gl::Program depthProgram_, tintProgram_;
+    GLenum filter_ = GL_NEAREST;
+};
+
+}  // namespace penumbra::shadows

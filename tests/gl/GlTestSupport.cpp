@@ -1,0 +1,79 @@
+#include "GlTestSupport.h"
+
+#include "gl/Debug.h"
+#include "platform/EglContext.h"
+#include "render/Offscreen.h"
+#include "scene/io/SceneFile.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <memory>
+
+namespace penumbra::test {
+
+namespace {
+class GlEnvironment : public ::testing::Environment {
+public:
+    void SetUp() override {
+        context_ = platform::EglContext::create("auto", /*debug=*/true);
+        gl::enableDebugOutput();
+    }
+    void TearDown() override { context_.reset(); }
+
+private:
+    std::unique_ptr<platform::EglContext> context_;
+};
+}  // namespace
+
+scene::Scene sceneFromJson(const std::string& json) {
+    return scene::io::parseSceneJson(json, std::filesystem::path(PENUMBRA_TEST_DATA) / "inline.json");
+}
+
+Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int width, int height,
+                    const std::string& technique) {
+    render::RenderOptions options;
+    options.technique = technique;
+    options.output = mode;
+    options.debugLight = light;
+    render::Renderer renderer(scene, options);
+    render::OffscreenTarget target(width, height);
+    renderer.render(0.0f, scene.camera, width, height, target.framebuffer());
+    return Frame{width, height, renderer.readLinear()};
+}
+
+Ray pixelRay(const scene::Camera& camera, int x, int y, int width, int height) {
+    const glm::mat4 inv = glm::inverse(camera.projection(float(width) / float(height)) * camera.view());
+    const glm::vec2 ndc{(x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f};
+    glm::vec4 a = inv * glm::vec4(ndc, -1.0f, 1.0f), b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+    a /= a.w;
+    b /= b.w;
+    return {glm::vec3(a), glm::normalize(glm::vec3(b - a))};
+}
+
+MaskComparison compareMasks(const std::vector<bool>& expected, const std::vector<bool>& rendered, int w, int h, int tol) {
+    MaskComparison c;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            c.expectedOn += expected[i];
+            c.renderedOn += rendered[i];
+            if (expected[i] == rendered[i]) continue;
+            ++c.mismatches;
+            bool nearEdge = false;
+            for (int dy = -tol; dy <= tol && !nearEdge; ++dy)
+                for (int dx = -tol; dx <= tol && !nearEdge; ++dx) {
+                    const int xx = x + dx, yy = y + dy;
+                    if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+                    nearEdge = expected[static_cast<std::size_t>(yy) * w + xx] != expected[i];
+                }
+            c.mismatchesAwayFromEdges += !nearEdge;
+        }
+    return c;
+}
+
+}  // namespace penumbra::test
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    ::testing::AddGlobalTestEnvironment(new penumbra::test::GlEnvironment);
+    return RUN_ALL_TESTS();
+}

@@ -1,0 +1,45 @@
+#pragma once
+// Headless GL test support: one EGL context for the whole test binary, scenes from JSON
+// strings, and per-pixel access to rendered channels (linear floats, row 0 = bottom).
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+#include <functional>
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace penumbra::test {
+
+struct Frame {
+    int width = 0, height = 0;
+    std::vector<float> rgba;
+    glm::vec3 at(int x, int y) const {
+        const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+        return {rgba[i], rgba[i + 1], rgba[i + 2]};
+    }
+    float alpha(int x, int y) const { return rgba[(static_cast<std::size_t>(y) * width + x) * 4 + 3]; }
+};
+
+scene::Scene sceneFromJson(const std::string& json);
+
+// Renders `scene` at time 0 from its camera and returns the chosen channel.
+Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light = 0, int width = 256, int height = 256,
+                    const std::string& technique = "hard");
+
+// World-space ray through the centre of pixel (x, y) (y up) of the scene camera.
+struct Ray {
+    glm::vec3 origin, direction;
+};
+Ray pixelRay(const scene::Camera& camera, int x, int y, int width, int height);
+
+// Compares a rendered boolean mask with an expected one. Pixels that differ but lie within
+// `tolerancePx` of a boundary of the expected mask are edge rasterisation, not errors.
+struct MaskComparison {
+    int expectedOn = 0, renderedOn = 0, mismatches = 0, mismatchesAwayFromEdges = 0;
+};
+MaskComparison compareMasks(const std::vector<bool>& expected, const std::vector<bool>& rendered, int width, int height,
+                            int tolerancePx);
+
+}  // namespace penumbra::test

@@ -1,0 +1,193 @@
+// Hard shadow maps against analytic expectations: the shadow of a known occluder covers
+// exactly the pixels that a ray test says it should (±2 px at edges), for every light type;
+// acne appears without bias and disappears with the defaults; Peter Panning appears with
+// too much bias.
+#include "GlTestSupport.h"
+
+#include "gl/Debug.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <optional>
+
+namespace penumbra::test {
+namespace {
+
+using render::OutputMode;
+
+struct Box {
+    glm::vec3 min, max;
+};
+
+// Ray/box slab test; returns the entry distance in (tMin, tMax).
+std::optional<float> hit(const Box& b, const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) {
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-9f) {
+            if (o[a] < b.min[a] || o[a] > b.max[a]) return std::nullopt;
+            continue;
+        }
+        float t0 = (b.min[a] - o[a]) / d[a], t1 = (b.max[a] - o[a]) / d[a];
+        if (t0 > t1) std::swap(t0, t1);
+        tMin = std::max(tMin, t0);
+        tMax = std::min(tMax, t1);
+        if (tMin > tMax) return std::nullopt;
+    }
+    return tMin;
+}
+
+// Expected shadow mask for a scene made of a ground plane (y = 0) and one box occluder.
+std::vector<bool> expectedShadow(const scene::Scene& s, const Box& occluder, int w, int h) {
+    const scene::Light& light = s.lights[0];
+    std::vector<bool> mask(static_cast<std::size_t>(w) * h, false);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Ray r = pixelRay(s.camera, x, y, w, h);
+            const float tGround = -r.origin.y / r.direction.y;
+            if (auto t = hit(occluder, r.origin, r.direction, 0.0f, tGround)) continue;  // sees the occluder: lit side
+            const glm::vec3 g = r.origin + r.direction * tGround;
+            glm::vec3 toLight = -light.direction;
+            float maxT = 1e9f;
+            if (light.type != scene::Light::Type::Directional) {
+                toLight = light.position - g;
+                maxT = glm::length(toLight);
+                toLight /= maxT;
+            }
+            mask[static_cast<std::size_t>(y) * w + x] = hit(occluder, g, toLight, 1e-4f, maxT).has_value();
+        }
+    return mask;
+}
+
+std::vector<bool> renderedShadow(const Frame& f) {
+    std::vector<bool> mask(static_cast<std::size_t>(f.width) * f.height);
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) mask[static_cast<std::size_t>(y) * f.width + x] = f.at(x, y).r < 0.5f;
+    return mask;
+}
+
+std::string sceneWith(const std::string& light, const std::string& occluder, const std::string& shadow = "{}") {
+    return R"({
+      "camera": { "position": [2, 12, 0], "target": [2, 0, 0], "up": [0, 0, -1], "fov_deg": 60, "near": 0.5, "far": 40 },
+      "lights": [ )" + light.substr(0, light.size() - 1) + R"(, "shadow": )" + shadow + R"( } ],
+      "objects": [
+        { "shape": "plane", "size": [20, 20] },
+        )" + occluder + R"(
+      ] })";
+}
+
+const char* kSquare = R"({ "shape": "box", "size": [2, 0.02, 2], "position": [0, 2, 0] })";
+const Box kSquareBox{{-1, 1.99f, -1}, {1, 2.01f, 1}};
+
+struct LightCase {
+    const char* name;
+    const char* json;
+};
+
+class AnalyticShadow : public ::testing::TestWithParam<LightCase> {};
+
+TEST_P(AnalyticShadow, QuadShadowCoversTheProjectedSquare) {
+    scene::Scene s = sceneFromJson(sceneWith(GetParam().json, kSquare));
+    const int w = 256, h = 256;
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, w, h);
+    const MaskComparison c = compareMasks(expectedShadow(s, kSquareBox, w, h), renderedShadow(f), w, h, 2);
+    EXPECT_GT(c.expectedOn, 1000) << "the test scene must show a sizeable shadow";
+    EXPECT_EQ(c.mismatchesAwayFromEdges, 0) << "pixels wrong by more than 2 px from the analytic edge";
+    EXPECT_NEAR(c.renderedOn, c.expectedOn, 0.03 * c.expectedOn);
+    EXPECT_EQ(gl::debugErrorCount(), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    LightTypes, AnalyticShadow,
+    ::testing::Values(
+        LightCase{"directional", R"({ "type": "directional", "direction": [2, -1, 0] })"},
+        LightCase{"spot", R"({ "type": "spot", "position": [-4, 6, 0], "direction": [1, -1, 0], "angle_deg": 100 })"},
+        LightCase{"point", R"({ "type": "point", "position": [-4, 6, 0] })"},
+        LightCase{"projector_cube_faces", R"({ "type": "point", "position": [-1.5, 3.5, 0.5] })"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// Share of ground pixels that a lit plane shows as shadowed (it casts on nothing but itself).
+float acneShare(const std::string& shadow) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 6, 6], "target": [0, 0, 0], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -0.6, 0.4], "shadow": )" + shadow + R"( } ],
+      "objects": [ { "shape": "plane", "size": [12, 12] } ] })");
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 200, 150);
+    int covered = 0, dark = 0;
+    for (int y = 0; y < f.height; ++y)
+        for (int x = 0; x < f.width; ++x) {
+            if (f.alpha(x, y) < 0.5f) continue;  // background
+            ++covered;
+            dark += f.at(x, y).r < 0.5f;
+        }
+    EXPECT_GT(covered, 10000);
+    return float(dark) / float(covered);
+}
+
+TEST(ShadowBias, NoBiasShowsAcneDefaultsShowNone) {
+    const float unbiased = acneShare(R"({ "bias": 0, "slope_bias": 0, "normal_offset": 0, "polygon_offset": [0, 0] })");
+    const float defaults = acneShare("{}");
+    EXPECT_GT(unbiased, 0.10f) << "self-shadowing (acne) must be reproducible by turning the bias off";
+    EXPECT_EQ(defaults, 0.0f) << "the default bias must remove acne entirely";
+}
+
+TEST(ShadowBias, LargeBiasDetachesTheShadow) {
+    // A cube standing on the ground: with too much bias its shadow leaves the contact (Peter Panning).
+    const char* cube = R"({ "shape": "box", "size": [1, 1, 1], "position": [0, 0.5, 0] })";
+    const Box cubeBox{{-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}};
+    const char* sun = R"({ "type": "directional", "direction": [1, -0.7, 0.3] })";
+    const int w = 256, h = 256;
+
+    scene::Scene good = sceneFromJson(sceneWith(sun, cube));
+    const std::vector<bool> expected = expectedShadow(good, cubeBox, w, h);
+    const MaskComparison ok = compareMasks(expected, renderedShadow(renderChannel(good, OutputMode::Visibility, 0, w, h)), w, h, 2);
+    EXPECT_EQ(ok.mismatchesAwayFromEdges, 0);
+
+    scene::Scene panning = sceneFromJson(sceneWith(sun, cube, R"({ "bias": 150 })"));
+    const MaskComparison bad =
+        compareMasks(expected, renderedShadow(renderChannel(panning, OutputMode::Visibility, 0, w, h)), w, h, 2);
+    EXPECT_GT(bad.mismatchesAwayFromEdges, ok.expectedOn / 20) << "a 150-texel bias must open a visible gap; mismatches "
+                                                                << bad.mismatches << " rendered " << bad.renderedOn
+                                                                << " expected " << bad.expectedOn;
+    EXPECT_LT(bad.renderedOn, ok.renderedOn);
+}
+
+// Light straight down through translucent panes (single surfaces) onto a white plane: the received light under
+// the panes is the product of (1 - rho) over the layers, rho = (1 - t) * alpha (SPEC §4).
+glm::vec3 lightUnderPanes(const std::vector<std::string>& materials) {
+    std::string objects = R"({ "shape": "plane", "size": [20, 20] })";
+    float y = 2.0f;
+    for (const auto& m : materials) {
+        objects += R"(, { "shape": "plane", "size": [3, 3], "position": [0, )" + std::to_string(y) +
+                   R"(, 0], "material": )" + m + "}";
+        y += 1.0f;
+    }
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "lights": [ { "type": "directional", "direction": [0, -1, 0] } ],
+      "objects": [ )" + objects + "] }");
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 64, 64);
+    // The centre 8x8 pixels lie well inside every pane's footprint.
+    glm::vec3 sum(0.0f);
+    for (int y0 = 28; y0 < 36; ++y0)
+        for (int x0 = 28; x0 < 36; ++x0) sum += f.at(x0, y0);
+    return sum / 64.0f;
+}
+
+constexpr float kHalfFloatTolerance = 2e-3f;  // RGBA16F tint map: 11-bit mantissa
+
+TEST(ColouredShadow, DeterministicTintMatchesTransmission) {
+    const std::string glass = R"({ "alpha": 1, "transmission": [0.1, 0.9, 0.1] })";
+    const glm::vec3 one = lightUnderPanes({glass});
+    EXPECT_NEAR(one.r, 0.1f, kHalfFloatTolerance);
+    EXPECT_NEAR(one.g, 0.9f, kHalfFloatTolerance);
+    EXPECT_NEAR(one.b, 0.1f, kHalfFloatTolerance);
+    const glm::vec3 two = lightUnderPanes({glass, glass});
+    EXPECT_NEAR(two.r, 0.01f, kHalfFloatTolerance);
+    EXPECT_NEAR(two.g, 0.81f, kHalfFloatTolerance);
+    EXPECT_NEAR(two.b, 0.01f, kHalfFloatTolerance);
+    const glm::vec3 nylon = lightUnderPanes({R"({ "alpha": 0.25, "transmission": [0.5, 0.5, 0.5] })"});
+    EXPECT_NEAR(nylon.g, 0.875f, kHalfFloatTolerance);
+    const glm::vec3 black = lightUnderPanes({R"({ "alpha": 0.25 })"});
+    EXPECT_NEAR(black.g, 0.75f, kHalfFloatTolerance);
+}
+
+}  // namespace
+}  // namespace penumbra::test
