@@ -100,7 +100,7 @@ INSTANTIATE_TEST_SUITE_P(
         LightCase{"directional", R"({ "type": "directional", "direction": [2, -1, 0] })"},
         LightCase{"spot", R"({ "type": "spot", "position": [-4, 6, 0], "direction": [1, -1, 0], "angle_deg": 100 })"},
         LightCase{"point", R"({ "type": "point", "position": [-4, 6, 0] })"},
-        LightCase{"projector_cube_faces", R"({ "type": "point", "position": [-1.5, 3.5, 0.5] })"}),
+        LightCase{"point_close", R"({ "type": "point", "position": [-1.5, 3.5, 0.5] })"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Share of ground pixels that a lit plane shows as shadowed (it casts on nothing but itself).

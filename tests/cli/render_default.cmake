@@ -1,0 +1,31 @@
+# The README's first command in its headless form: `penumbra` with no arguments and no display
+# renders the built-in default scene into ./out and prints per-pass timings.
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+execute_process(
+  COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY "${PENUMBRA}"
+  WORKING_DIRECTORY "${OUT}"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "penumbra exited with ${rc}")
+endif()
+foreach(f frame_0000.png frame_0002.png stats.json)
+  if(NOT EXISTS "${OUT}/out/${f}")
+    message(FATAL_ERROR "missing ${OUT}/out/${f}")
+  endif()
+endforeach()
+file(READ "${OUT}/out/stats.json" stats)
+string(JSON total GET "${stats}" mean_ms total)
+string(JSON shadow GET "${stats}" mean_ms shadow)
+string(JSON errors GET "${stats}" gl_errors)
+string(JSON memory GET "${stats}" shadow_memory_bytes)
+if(NOT total GREATER 0 OR NOT shadow GREATER 0 OR NOT memory GREATER 0)
+  message(FATAL_ERROR "stats.json lacks timings or memory: total=${total} shadow=${shadow} memory=${memory}")
+endif()
+if(NOT errors EQUAL 0)
+  message(FATAL_ERROR "GL errors during the default-scene run: ${errors}")
+endif()
+if(NOT out MATCHES "shadow [0-9.]+ \\| opaque")
+  message(FATAL_ERROR "per-pass timings were not printed")
+endif()

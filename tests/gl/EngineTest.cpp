@@ -1,0 +1,208 @@
+// Engine behaviour seen in pixels: projector pictures, moving shadows, fog, missing textures,
+// shader errors, degenerate sizes, and a clean KHR_debug log for every technique and light.
+#include "GlTestSupport.h"
+
+#include "gl/Debug.h"
+#include "gl/Program.h"
+#include "render/Offscreen.h"
+#include "util/Log.h"
+
+#include <fstream>
+
+namespace penumbra::test {
+namespace {
+
+using render::OutputMode;
+
+glm::vec3 srgbToLinear(glm::vec3 c) {
+    for (int i = 0; i < 3; ++i) c[i] = c[i] <= 0.04045f ? c[i] / 12.92f : std::pow((c[i] + 0.055f) / 1.055f, 2.4f);
+    return c;
+}
+
+TEST(Projector, PicturesLandUprightAndShadowsCutThem) {
+    // A projector straight down onto a white plane, no ambient: the lit colour is the picture.
+    // A small box in the beam blocks part of it.
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 10, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "ambient": [0, 0, 0],
+      "lights": [ { "type": "projector", "position": [0, 6, 0], "direction": [0, -1, 0], "angle_deg": 40,
+                    "image": "quadrants.png" } ],
+      "objects": [ { "shape": "plane", "size": [20, 20], "material": { "diffuse": [1, 1, 1], "specular": [0, 0, 0] } },
+                   { "shape": "box", "size": [0.3, 0.3, 0.3], "position": [1.0, 3.0, 1.0],
+                     "material": { "diffuse": [0, 0, 0], "specular": [0, 0, 0] } } ] })");
+    const int n = 128;
+    const Frame f = renderChannel(s, OutputMode::Shaded, 0, n, n);
+    // Where does each quadrant land? The projector's shadow matrix says: sample the four
+    // quadrant centres of the picture's projection, found from the same matrix the engine uses.
+    const shadows::LightSpace ls = shadows::computeLightSpace(s.lights[0], 256, s.boundsAt(0), s.camera, 1.0f);
+    auto colourAtPictureUv = [&](float u, float vTop) {
+        // Ground point whose projector uv is (u, 1 - vTop) (image rows run top to bottom).
+        const glm::mat4 inv = glm::inverse(ls.shadowMatrix);
+        glm::vec4 a = inv * glm::vec4(u, 1.0f - vTop, 0.0f, 1.0f), b = inv * glm::vec4(u, 1.0f - vTop, 1.0f, 1.0f);
+        a /= a.w;
+        b /= b.w;
+        const glm::vec3 g = glm::vec3(a) + (glm::vec3(b) - glm::vec3(a)) * (a.y / (a.y - b.y));
+        const glm::vec4 clip = s.camera.projection(1.0f) * s.camera.view() * glm::vec4(g, 1.0f);
+        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * float(n);
+        // Divide out Lambert's cosine: what is left is the picture's colour.
+        const float NdotL = glm::normalize(s.lights[0].position - g).y;
+        return f.at(int(px.x), int(px.y)) / NdotL;
+    };
+    auto near = [](glm::vec3 a, glm::vec3 b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(0.02f))); };
+    EXPECT_TRUE(near(colourAtPictureUv(0.25f, 0.25f), {1, 0, 0})) << "top-left of the picture is red";
+    EXPECT_TRUE(near(colourAtPictureUv(0.75f, 0.25f), {0, 1, 0})) << "top-right is green";
+    EXPECT_TRUE(near(colourAtPictureUv(0.25f, 0.75f), {0, 0, 1})) << "bottom-left is blue";
+    // The box at (1, 3, 1) shadows the ground around (2, 0, 2) (from (0,6,0) through the box, doubled).
+    const glm::vec4 clip = s.camera.projection(1.0f) * s.camera.view() * glm::vec4(2.0f, 0.0f, 2.0f, 1.0f);
+    const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * float(n);
+    EXPECT_LT(glm::length(f.at(int(px.x), int(px.y))), 0.02f) << "the caster's shadow cuts the picture";
+    // Outside the projector's frame: no light at all.
+    EXPECT_LT(glm::length(f.at(2, 2)), 0.02f);
+}
+
+// The ground under a moving sphere: the shadow must follow it (maps re-rendered every frame).
+TEST(Animation, ShadowFollowsTheMovingCaster) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [0, -1, 2] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "sphere", "radius": 0.6, "animation": [[0, -3, 1, 0], [1, 3, 1, 0], [2, -3, 1, 0]] } ] })");
+    render::RenderOptions options;
+    options.output = OutputMode::Visibility;
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(96, 96);
+    auto shadowCentroidX = [&](float t) {
+        renderer.render(t, s.camera, 96, 96, target.framebuffer());
+        const Frame f{96, 96, renderer.readLinear()};
+        double sum = 0;
+        int count = 0;
+        for (int y = 0; y < 96; ++y)
+            for (int x = 0; x < 96; ++x)
+                if (f.at(x, y).r < 0.5f) { sum += x; ++count; }
+        EXPECT_GT(count, 20);
+        return count ? sum / count : -1.0;
+    };
+    const double left = shadowCentroidX(0.0f), right = shadowCentroidX(1.0f);
+    // 6 world units apart at ~0.117 units per pixel (12 * tan(25°) * 2 / 96).
+    EXPECT_NEAR(right - left, 6.0 / (2 * 12 * std::tan(glm::radians(25.0)) / 96), 2.0);
+}
+
+TEST(Fog, FarSurfacesFadeToTheBackground) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_deg": 60, "far": 100 },
+      "background": [0.2, 0.4, 0.8], "ambient": [1, 1, 1], "fog": { "start": 10, "end": 40 },
+      "objects": [ { "shape": "box", "size": [2, 2, 0.1], "position": [0, 1, -5], "material": { "diffuse": [1, 0, 0] } },
+                   { "shape": "box", "size": [400, 400, 0.1], "position": [0, 1, -60], "material": { "diffuse": [1, 0, 0] } } ] })");
+    render::Renderer renderer(s);
+    render::OffscreenTarget target(64, 64);
+    renderer.render(0, s.camera, 64, 64, target.framebuffer());
+    const auto pixels = target.readRgba8();  // image order, sRGB
+    auto rgb = [&](int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * 64 + x) * 4;
+        return srgbToLinear(glm::vec3(pixels[i], pixels[i + 1], pixels[i + 2]) / 255.0f);
+    };
+    const glm::vec3 nearBox = rgb(32, 32), farWall = rgb(2, 2);
+    EXPECT_NEAR(nearBox.r, 1.0f, 0.01f);
+    EXPECT_NEAR(nearBox.b, 0.0f, 0.01f);
+    EXPECT_NEAR(farWall.r, 0.2f, 0.02f) << "beyond fog end the colour is the background";
+    EXPECT_NEAR(farWall.b, 0.8f, 0.02f);
+}
+
+TEST(BadInput, MissingTextureRendersAVisibleChecker) {
+    log::takeWarnings();
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 5, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "ambient": [1, 1, 1],
+      "objects": [ { "shape": "plane", "size": [4, 4], "material": { "diffuse": [1, 1, 1], "texture": "gone.png" } } ] })");
+    EXPECT_FALSE(log::takeWarnings().empty());
+    const Frame f = renderChannel(s, OutputMode::Shaded, 0, 64, 64);
+    int magenta = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const glm::vec3 c = f.at(x, y);
+            magenta += c.r > 0.5f && c.g < 0.05f && c.b > 0.5f;
+        }
+    EXPECT_GT(magenta, 64 * 64 / 5) << "the fallback must be visible, not silently white";
+}
+
+TEST(BadInput, ShaderCompileErrorNamesFileAndLine) {
+    const std::string path = std::string(PENUMBRA_TEST_DATA) + "/bad_shader.frag";
+    try {
+        gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = path});
+        FAIL() << "a broken shader compiled";
+    } catch (const gl::ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad_shader.frag:3"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("undefinedThing"), std::string::npos) << e.what();
+    }
+    try {
+        gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/no_such_file.frag"});
+        FAIL() << "a missing shader compiled";
+    } catch (const gl::ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("no_such_file.frag"), std::string::npos) << e.what();
+    }
+}
+
+TEST(BadInput, IncludedFileErrorsPointIntoTheIncludedFile) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "penumbra_include_test";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "helper.glsl") << "// helper\nfloat helper() {\n  return missingSymbol;\n}\n";
+    std::ofstream(dir / "main.frag") << "#version 450 core\n#include \"helper.glsl\"\nout vec4 c;\nvoid main() { c = vec4(helper()); }\n";
+    try {
+        gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = dir / "main.frag"});
+        FAIL();
+    } catch (const gl::ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("helper.glsl:3"), std::string::npos) << e.what();
+    }
+}
+
+TEST(BadInput, ZeroSizedFrameIsSkipped) {
+    scene::Scene s = sceneFromJson(R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0] } ],
+                                        "objects": [ { "shape": "box" } ] })");
+    render::Renderer renderer(s);
+    gl::resetDebugErrorCount();
+    EXPECT_NO_THROW(renderer.render(0, s.camera, 0, 0, 0));
+    EXPECT_NO_THROW(renderer.render(0, s.camera, 0, 480, 0));
+    EXPECT_EQ(gl::debugErrorCount(), 0);
+}
+
+TEST(BadInput, UnknownTechniqueListsTheKnownOnes) {
+    scene::Scene s = sceneFromJson(R"({ "objects": [ { "shape": "box" } ] })");
+    render::Renderer renderer(s);
+    try {
+        renderer.setTechnique("wobbly");
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("hard"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(renderer.technique().name(), "hard") << "the previous technique stays active";
+}
+
+// Every technique with every light type (several at once) renders without GL errors.
+TEST(DebugOutput, EveryTechniqueAndLightTypeIsClean) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [4, 4, 6], "target": [0, 0, 0] },
+      "lights": [ { "type": "directional", "direction": [-1, -2, -1] },
+                  { "type": "spot", "position": [2, 4, 2], "direction": [-0.5, -1, -0.5], "angle_deg": 60 },
+                  { "type": "point", "position": [-2, 3, 1], "color": [1, 0.5, 0.5] },
+                  { "type": "projector", "position": [0, 3, 5], "direction": [0, -0.5, -1], "image": "quadrants.png" } ],
+      "objects": [ { "shape": "plane", "size": [10, 10] },
+                   { "shape": "box", "position": [0, 0.5, 0] },
+                   { "shape": "plane", "size": [1, 1], "position": [1, 1.5, 0], "material": { "transmission": [0.1, 0.9, 0.1] } } ] })");
+    for (const auto& info : shadows::techniqueRegistry()) {
+        gl::resetDebugErrorCount();
+        for (auto mode : {OutputMode::Shaded, OutputMode::Visibility}) {
+            render::RenderOptions options;
+            options.technique = info.name;
+            options.output = mode;
+            options.debugOverlay = true;
+            render::Renderer renderer(s, options);
+            render::OffscreenTarget target(64, 48);
+            renderer.render(0.5f, s.camera, 64, 48, target.framebuffer());
+            EXPECT_GT(renderer.lastTimes().totalMs(), 0.0);
+        }
+        EXPECT_EQ(gl::debugErrorCount(), 0) << info.name;
+    }
+}
+
+}  // namespace
+}  // namespace penumbra::test

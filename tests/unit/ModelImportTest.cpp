@@ -1,0 +1,96 @@
+// Model files map onto the material model: OBJ/MTL Kd, map_Kd, d/Tr (coverage) and Tf
+// (transmission); glTF base colour, alpha modes, transmission and volume attenuation.
+#include "scene/io/ModelImporter.h"
+#include "scene/io/SceneFile.h"
+#include "util/Error.h"
+#include "util/Log.h"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::scene::io {
+namespace {
+
+const std::filesystem::path kData = PENUMBRA_TEST_DATA;
+
+const Material& byName(const Scene& s, const std::string& name) {
+    for (const auto& m : s.materials)
+        if (m.name == name) return m;
+    throw std::runtime_error("no material " + name);
+}
+
+TEST(ModelImport, ObjMtlCoverageAndTransmission) {
+    log::takeWarnings();
+    Scene s;
+    const int mesh = importModel(kData / "materials.obj", s);
+    EXPECT_EQ(s.meshes[static_cast<std::size_t>(mesh)].triangleCount(), 5u);
+
+    const Material& glass = byName(s, "green_glass");
+    EXPECT_FLOAT_EQ(glass.alpha, 1.0f);
+    EXPECT_EQ(glass.transmission, glm::vec3(0.1f, 0.9f, 0.1f));
+    EXPECT_EQ(glass.diffuse, glm::vec3(0.1f, 0.9f, 0.1f));
+
+    const Material& nylon = byName(s, "nylon");
+    EXPECT_FLOAT_EQ(nylon.alpha, 0.25f);
+    EXPECT_EQ(nylon.transmission, glm::vec3(0.5f));
+    EXPECT_NEAR(nylon.stopped().g, 0.125f, 1e-6f);
+
+    const Material& wall = byName(s, "wall");
+    EXPECT_EQ(wall.transmission, glm::vec3(0.0f)) << "Tf on a non-refracting illum model carries no transmission";
+    EXPECT_FLOAT_EQ(wall.alpha, 1.0f);
+    EXPECT_FALSE(wall.translucent());
+    ASSERT_GE(wall.diffuseTexture, 0);
+    EXPECT_TRUE(s.images[static_cast<std::size_t>(wall.diffuseTexture)].fallback);
+    const auto warnings = log::takeWarnings();
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_NE(warnings[0].find("does_not_exist.png"), std::string::npos);
+
+    EXPECT_NEAR(byName(s, "tr_only").alpha, 0.25f, 1e-6f) << "Tr is 1 - d";
+}
+
+TEST(ModelImport, GltfAlphaModesTransmissionAndVolume) {
+    Scene s;
+    importModel(kData / "materials.gltf", s);
+    const Material& glass = byName(s, "green glass");
+    EXPECT_NEAR(glass.transmission.r, 0.1f, 1e-6f);
+    EXPECT_NEAR(glass.transmission.g, 0.9f, 1e-6f);
+    EXPECT_FLOAT_EQ(glass.alpha, 1.0f);
+    const Material& blend = byName(s, "blend");
+    EXPECT_FLOAT_EQ(blend.alpha, 0.4f);
+    EXPECT_NEAR(blend.diffuse.r, 0.8f, 1e-6f);
+    const Material& mask = byName(s, "mask");
+    EXPECT_FLOAT_EQ(mask.alphaCutoff, 0.3f);
+    EXPECT_FLOAT_EQ(mask.alpha, 1.0f);
+    EXPECT_EQ(s.meshes[0].triangleCount(), 6u);
+    EXPECT_NEAR(s.meshes[0].bounds.max.x, 4.5f, 1e-5f) << "node transforms are baked in";
+}
+
+TEST(ModelImport, MalformedFilesNameTheFile) {
+    for (const char* name : {"broken.obj", "broken.gltf"}) {
+        Scene s;
+        try {
+            importModel(kData / name, s);
+            ADD_FAILURE() << name << " was accepted";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(ModelImport, BareModelGetsGroundSunAndFraming) {
+    const Scene s = loadScene(kData / "materials.obj");
+    ASSERT_EQ(s.objects.size(), 2u);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, Light::Type::Directional);
+    EXPECT_GT(s.ambient.r, 0.0f);
+    const Bounds model = s.meshes[0].bounds;
+    const Bounds ground = s.meshes[1].bounds.transformed(s.objects[1].transformAt(0));
+    EXPECT_LE(ground.max.y, model.min.y) << "ground sits under the model";
+    EXPECT_GT(ground.extent().x, model.extent().x * 4);
+    // The camera looks at the model's centre from outside it, above the ground.
+    EXPECT_LT(glm::length(s.camera.target - model.center()), 1e-5f);
+    EXPECT_GT(glm::length(s.camera.position - model.center()), glm::length(model.extent()));
+    EXPECT_GT(s.camera.position.y, ground.max.y);
+}
+
+}  // namespace
+}  // namespace penumbra::scene::io
