@@ -33,7 +33,8 @@ struct ViewerState {
     int selectedLight = 0;
     bool screenshotRequested = false;
     int screenshotCount = 0;
-    double fpsSmoothed = 0.0;
+    double frameSeconds = 0.0;  // exponentially smoothed frame time
+    double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
 // Rotates a light: direction for directional lights, position around the scene centre otherwise.
@@ -56,7 +57,7 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     ImGui::SetNextWindowBgAlpha(0.8f);
     ImGui::Begin("penumbra", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     const render::PassTimes& t = renderer.lastTimes();
-    ImGui::Text("%.1f FPS | GPU ms: shadow %.2f, opaque %.2f, translucent %.2f, post %.2f", state.fpsSmoothed, t.shadowMs,
+    ImGui::Text("%.1f FPS | GPU ms: shadow %.2f, opaque %.2f, translucent %.2f, post %.2f", state.fps(), t.shadowMs,
                 t.opaqueMs, t.translucentMs, t.postMs);
     ImGui::Text("shadow memory %.2f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
 
@@ -174,7 +175,7 @@ int runViewer(const ViewerOptions& opts) {
         const auto now = std::chrono::steady_clock::now();
         const float dt = std::min(std::chrono::duration<float>(now - previous).count(), 0.25f);
         previous = now;
-        state.fpsSmoothed = state.fpsSmoothed * 0.9 + (dt > 0 ? 0.1 / dt : 0.0);
+        state.frameSeconds = state.frameSeconds > 0 ? state.frameSeconds * 0.9 + dt * 0.1 : dt;
         if (state.animate) state.time += dt;
 
         const ImGuiIO& io = ImGui::GetIO();
@@ -228,7 +229,7 @@ int runViewer(const ViewerOptions& opts) {
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
             ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fpsSmoothed, renderer.lastTimes().totalMs());
+            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(), renderer.lastTimes().totalMs());
             ImGui::End();
         }
         ImGui::Render();

@@ -13,8 +13,8 @@ namespace penumbra::scene {
 struct ShadowSettings {
     bool enabled = true;
     int resolution = 2048;
-    float bias = 0.002f;
-    float slopeBias = 0.004f;
+    float bias = 0.2f;
+    float slopeBias = 0.5f;
     float normalOffset = 1.0f;
     glm::vec2 polygonOffset{1.5f, 2.0f};
 };
