@@ -39,17 +39,19 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.depth.setDepthCompare(true);
     for (gl::Texture* t : {&m.depth, &m.tint}) t->setFilter(filter_, filter_);
     for (int f = 0; f < (cube ? 6 : 1); ++f) {
-        gl::Framebuffer fb;
-        if (cube) {
-            fb.attachLayer(GL_DEPTH_ATTACHMENT, m.depth, f);
-            fb.attachLayer(GL_COLOR_ATTACHMENT0, m.tint, f);
-        } else {
-            fb.attach(GL_DEPTH_ATTACHMENT, m.depth);
-            fb.attach(GL_COLOR_ATTACHMENT0, m.tint);
+        gl::Framebuffer depthOnly, withTint;
+        for (gl::Framebuffer* fb : {&depthOnly, &withTint}) {
+            if (cube) fb->attachLayer(GL_DEPTH_ATTACHMENT, m.depth, f);
+            else fb->attach(GL_DEPTH_ATTACHMENT, m.depth);
         }
-        fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        fb.checkComplete("shadow map " + std::to_string(res));
-        m.faces.push_back(std::move(fb));
+        if (cube) withTint.attachLayer(GL_COLOR_ATTACHMENT0, m.tint, f);
+        else withTint.attach(GL_COLOR_ATTACHMENT0, m.tint);
+        depthOnly.setNoColor();
+        withTint.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        depthOnly.checkComplete("shadow depth map " + std::to_string(res));
+        withTint.checkComplete("shadow tint map " + std::to_string(res));
+        m.depthFaces.push_back(std::move(depthOnly));
+        m.tintFaces.push_back(std::move(withTint));
     }
 }
 
@@ -77,17 +79,15 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
         LightMaps& m = maps_[i];
         glViewport(0, 0, ls.resolution, ls.resolution);
         for (int f = 0; f < ls.faceCount; ++f) {
-            const gl::Framebuffer& fb = m.faces[static_cast<std::size_t>(f)];
-            fb.bind();
-            glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, white);
-            glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
-            const glm::mat4& vp = ls.viewProj[static_cast<std::size_t>(f)];
+            const auto face = static_cast<std::size_t>(f);
+            const glm::mat4& vp = ls.viewProj[face];
 
             // 1. Opaque casters: depth only, with the light's polygon offset.
+            m.depthFaces[face].bind();
+            glClearNamedFramebufferfv(m.depthFaces[face].id(), GL_DEPTH, 0, &farDepth);
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);
             glDepthMask(GL_TRUE);
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             const glm::vec2 po = light.shadow.polygonOffset;
             if (po.x != 0.0f || po.y != 0.0f) {
                 glEnable(GL_POLYGON_OFFSET_FILL);
@@ -99,7 +99,8 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
 
             // 2. Translucent casters in front of the opaque depth: multiply transmittance
             //    into rgb, keep the nearest translucent depth in alpha.
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            m.tintFaces[face].bind();
+            glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
             glDepthMask(GL_FALSE);
             glEnable(GL_BLEND);
             glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);

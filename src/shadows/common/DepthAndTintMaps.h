@@ -19,7 +19,9 @@ public:
         bool cube = false;
         gl::Texture depth;  // DEPTH_COMPONENT32F, hardware compare enabled
         gl::Texture tint;   // RGBA16F: rgb transmittance, a nearest translucent depth
-        std::vector<gl::Framebuffer> faces;  // one per cube face, or one
+        // Per face (6 for cubes): depth only for the opaque pass (llvmpipe then never touches
+        // the colour tiles), depth + colour for the translucent pass.
+        std::vector<gl::Framebuffer> depthFaces, tintFaces;
     };
 
     DepthAndTintMaps();
