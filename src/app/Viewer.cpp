@@ -113,16 +113,10 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
 }
 
 void saveScreenshot(const ViewerOptions& opts, ViewerState& state, int w, int h) {
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h * 4), flipped(pixels.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-    const std::size_t row = static_cast<std::size_t>(w) * 4;
-    for (int y = 0; y < h; ++y) std::copy_n(&pixels[static_cast<std::size_t>(h - 1 - y) * row], row, &flipped[static_cast<std::size_t>(y) * row]);
     char name[64];
     std::snprintf(name, sizeof name, "screenshot_%03d.png", state.screenshotCount++);
     const auto file = opts.screenshotDir / name;
-    render::writePng(file, w, h, flipped);
+    render::writePng(file, w, h, render::readFramebufferRgba8(0, w, h));
     std::printf("penumbra: saved %s\n", file.string().c_str());
 }
 

@@ -14,16 +14,19 @@ OffscreenTarget::OffscreenTarget(int width, int height)
     fbo_.checkComplete("offscreen target");
 }
 
-std::vector<std::uint8_t> OffscreenTarget::readRgba8() const {
-    const std::size_t row = static_cast<std::size_t>(width_) * 4;
-    std::vector<std::uint8_t> flipped(row * static_cast<std::size_t>(height_));
+std::vector<std::uint8_t> readFramebufferRgba8(GLuint fbo, int width, int height) {
+    const std::size_t row = static_cast<std::size_t>(width) * 4;
+    std::vector<std::uint8_t> glOrder(row * static_cast<std::size_t>(height));
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(flipped.size()), flipped.data());
-    std::vector<std::uint8_t> out(flipped.size());
-    for (int y = 0; y < height_; ++y)  // GL's first row is the bottom of the picture
-        std::copy_n(&flipped[static_cast<std::size_t>(height_ - 1 - y) * row], row, &out[static_cast<std::size_t>(y) * row]);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glReadnPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(glOrder.size()), glOrder.data());
+    std::vector<std::uint8_t> out(glOrder.size());
+    for (int y = 0; y < height; ++y)  // GL's first row is the bottom of the picture
+        std::copy_n(&glOrder[static_cast<std::size_t>(height - 1 - y) * row], row, &out[static_cast<std::size_t>(y) * row]);
     return out;
 }
+
+std::vector<std::uint8_t> OffscreenTarget::readRgba8() const { return readFramebufferRgba8(fbo_.id(), width_, height_); }
 
 void writePng(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgba) {
     if (!stbi_write_png(file.string().c_str(), width, height, 4, rgba.data(), width * 4))

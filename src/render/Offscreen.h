@@ -24,6 +24,9 @@ private:
     gl::Framebuffer fbo_;
 };
 
+// RGBA8 pixels of framebuffer `fbo` (0: the window), top row first (image order).
+std::vector<std::uint8_t> readFramebufferRgba8(GLuint fbo, int width, int height);
+
 // Throws std::runtime_error naming the file when it cannot be written.
 void writePng(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgba);
 
