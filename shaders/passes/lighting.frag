@@ -16,7 +16,8 @@ layout(binding = UNIT_PROJECTOR) uniform sampler2D uProjectorImage[MAX_PROJECTOR
 uniform vec3 uCameraPos;
 uniform vec3 uAmbient;
 uniform int uTranslucentPass;  // 1: dual-source output of transmittance for blending
-uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal
+uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal,
+                               // 4 unshadowed light from uDebugLight, 5 ambient term
 uniform int uDebugLight;
 
 layout(location = 0, index = 0) out vec4 outColor;
@@ -62,7 +63,7 @@ void main() {
     if (!gl_FrontFacing) N = -N;  // two-sided surfaces (planes, panes) light on both faces
     vec3 V = normalize(uCameraPos - P);
 
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0), debugVisibility = vec3(1.0);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), debugVisibility = vec3(1.0), debugContribution = vec3(0.0);
     for (int i = 0; i < uLightCount.x; ++i) {
         vec3 L;
         vec3 radiance = incidentRadiance(i, P, L);
@@ -71,6 +72,8 @@ void main() {
         if (i == uDebugLight) debugVisibility = visibility;
         if (NdotL <= 0.0) continue;
         vec3 H = normalize(L + V);
+        vec3 unshadowed = (albedo * NdotL + uSpecular * pow(max(dot(N, H), 0.0), uShininess)) * radiance;
+        if (i == uDebugLight) debugContribution = unshadowed;
         vec3 received = radiance * visibility;
         diffuse += albedo * NdotL * received;
         specular += uSpecular * pow(max(dot(N, H), 0.0), uShininess) * received;
@@ -79,8 +82,10 @@ void main() {
     if (uOutputMode == 1) { outColor = vec4(debugVisibility, 1.0); outTransmit = vec4(0.0); return; }
     if (uOutputMode == 2) { outColor = vec4(P, 1.0); outTransmit = vec4(0.0); return; }
     if (uOutputMode == 3) { outColor = vec4(N, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 4) { outColor = vec4(debugContribution, 1.0); outTransmit = vec4(0.0); return; }
 
     vec3 ambient = uAmbient * albedo;
+    if (uOutputMode == 5) { outColor = vec4(ambient, 1.0); outTransmit = vec4(0.0); return; }
     if (uTranslucentPass == 0) {
         outColor = vec4(ambient + diffuse + specular, 1.0);
         outTransmit = vec4(0.0);

@@ -1,6 +1,7 @@
 // penumbra command line: parses arguments and calls the core. No GL calls here.
 #include "app/Viewer.h"
 #include "platform/GlfwWindow.h"
+#include "reference/Report.h"
 #include "render/BatchRender.h"
 #include "scene/io/SceneFile.h"
 #include "shadows/ShadowTechnique.h"
@@ -9,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 using namespace penumbra;
 
@@ -67,6 +69,27 @@ int main(int argc, char** argv) {
     rend->add_option("--egl-platform", job.eglPlatform, "auto | surfaceless | device")
         ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
 
+    reference::ReportJob report;
+    std::string techniqueList;
+    auto* ref = cli.add_subcommand("reference", "ray-trace the ground truth of a frame (Embree, all cores)");
+    auto* cmp = cli.add_subcommand("compare", "score shadow techniques against the ray-traced reference");
+    for (CLI::App* sub : {ref, cmp}) {
+        sub->add_option("scene", scenePath, "scene file (.json) or model file; default: the built-in scene");
+        sub->add_option("--size", size, "image size WxH (default 1280x720)");
+        sub->add_option("--time", report.time, "scene time of the frame, seconds");
+        sub->add_option("--samples", report.samples, "samples per pixel for area lights (default 64)")
+            ->check(CLI::Range(1, 65536));
+        sub->add_option("--egl-platform", report.eglPlatform, "auto | surfaceless | device")
+            ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
+    }
+    ref->add_option("--out", report.outDir, "output directory (default ./reference)");
+    cmp->add_option("--out", report.outDir, "output directory (default ./compare)");
+    cmp->add_option("--techniques", techniqueList, "comma-separated technique names (default: all)");
+    cmp->add_option("--shadow-res", report.shadowResolution, "shadow-map resolution for every light")
+        ->check(CLI::Range(16, 16384));
+    cmp->add_option("--timed-frames", report.timedFrames, "frames timed per technique (default 3)")
+        ->check(CLI::Range(1, 1000));
+
     auto* techniques = cli.add_subcommand("techniques", "list the shadow techniques");
 
     try {
@@ -81,6 +104,18 @@ int main(int argc, char** argv) {
         if (*techniques) {
             for (const auto& t : shadows::techniqueRegistry()) std::printf("%-10s %s\n", t.name.c_str(), t.description.c_str());
             return 0;
+        }
+        if (*ref || *cmp) {
+            report.scene = scene;
+            if (!size.empty()) parseSize(size, report.width, report.height);
+            if (report.outDir.empty()) report.outDir = *ref ? "reference" : "compare";
+            if (*ref) return reference::runReference(report);
+            std::stringstream list(techniqueList);
+            for (std::string name; std::getline(list, name, ',');)
+                if (!name.empty()) report.techniques.push_back(name);
+            if (techniqueList.empty())
+                for (const auto& t : shadows::techniqueRegistry()) report.techniques.push_back(t.name);
+            return reference::runCompare(report);
         }
         const bool wantView = *view || (!*rend && platform::displayAvailable());
         if (wantView) {

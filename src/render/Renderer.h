@@ -18,7 +18,10 @@
 
 namespace penumbra::render {
 
-enum class OutputMode { Shaded = 0, Visibility = 1, WorldPosition = 2, Normal = 3 };
+// Debug channels (linear floats, nearest opaque surface only): a light's shadow visibility,
+// the G-buffer, a light's unshadowed contribution and the ambient term. The shaded opaque image
+// equals Ambient + sum over lights of Contribution * Visibility.
+enum class OutputMode { Shaded = 0, Visibility = 1, WorldPosition = 2, Normal = 3, Contribution = 4, Ambient = 5 };
 
 struct RenderOptions {
     std::string technique = "hard";

@@ -18,3 +18,6 @@ expect_failure("broken.obj" "${PENUMBRA}" render "${DATA}/broken_model.json" --o
 expect_failure("known: hard" "${PENUMBRA}" render --technique wobbly --out "${tmp}")
 expect_failure("expected WxH" "${PENUMBRA}" render --size 12by4 --out "${tmp}")
 expect_failure("file not found" "${PENUMBRA}" render "${DATA}/does_not_exist.json" --out "${tmp}")
+expect_failure("known: hard" "${PENUMBRA}" compare --techniques hard,wobbly --out "${tmp}")
+expect_failure("no lights" "${PENUMBRA}" compare "${DATA}/missing_texture.json" --out "${tmp}")
+expect_failure("no lights" "${PENUMBRA}" reference "${DATA}/missing_texture.json" --out "${tmp}")

@@ -1,0 +1,67 @@
+#pragma once
+// One frame of a scene compared between shadow techniques and the ray-traced reference on the
+// *same visible surfaces*: the rasteriser's G-buffer (world position, normal) feeds the rays,
+// so the difference measures shadowing alone. Needs a current GL context.
+#include "reference/Metrics.h"
+#include "reference/Visibility.h"
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace penumbra::reference {
+
+struct TechniqueScore {
+    std::string name;
+    int shadowResolution = 0;  // 0: per light
+    double rmse = 0, wrongShare = 0, colourError = 0;
+    std::size_t pixels = 0, colouredPixels = 0;
+    double shadowMs = 0, totalMs = 0;  // mean GPU ms of full shaded frames
+    std::size_t memoryBytes = 0;
+    std::vector<std::vector<glm::vec3>> visibility;  // per light, GL row order
+    std::vector<float> maxError;                     // per pixel, over lights
+};
+
+class Comparison {
+public:
+    // Captures the G-buffer, ambient term and each light's unshadowed contribution.
+    // Throws InputError when the scene has no lights.
+    Comparison(scene::Scene& scene, int width, int height, float time);
+
+    // Ray-traces every light's visibility (samples per pixel for area lights).
+    void traceReference(int samples, bool showProgress);
+    double referenceSeconds() const { return referenceSeconds_; }
+
+    // Renders `technique`'s visibility for every light and scores it against the reference;
+    // `timedFrames` full frames measure its GPU cost.
+    TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames);
+
+    // The frame shaded with the given per-light visibility (the reference's or a technique's):
+    // ambient + sum(contribution * visibility), fog, background; RGBA8 sRGB top row first.
+    std::vector<std::uint8_t> shade(const std::vector<std::vector<glm::vec3>>& visibility) const;
+    std::vector<std::uint8_t> heatMap(const TechniqueScore& score) const;
+
+    const std::vector<std::vector<glm::vec3>>& referenceVisibility() const { return reference_; }
+    const std::vector<bool>& litMask(std::size_t light) const { return lit_[light]; }
+    const SurfacePoints& surfaces() const { return points_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    std::vector<glm::vec3> capture(render::Renderer& renderer, render::OutputMode mode, int light);
+    scene::Scene& scene_;
+    int width_, height_;
+    float time_;
+    SurfacePoints points_;
+    std::vector<glm::vec3> ambient_;
+    std::vector<std::vector<glm::vec3>> contribution_;  // per light
+    std::vector<std::vector<bool>> lit_;                // per light: the light reaches the surface unshadowed
+    std::vector<std::vector<glm::vec3>> reference_;     // per light
+    double referenceSeconds_ = 0;
+};
+
+// Whether `name` is in the technique registry (no GL needed).
+bool isKnownTechnique(const std::string& name);
+
+}  // namespace penumbra::reference

@@ -1,0 +1,129 @@
+#include "reference/Report.h"
+
+#include "gl/Debug.h"
+#include "platform/EglContext.h"
+#include "reference/Comparison.h"
+#include "render/Offscreen.h"
+#include "scene/io/SceneFile.h"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+namespace penumbra::reference {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Session {
+    std::unique_ptr<platform::EglContext> context;
+    scene::Scene scene;
+};
+
+Session open(const ReportJob& job) {
+    if (job.width <= 0 || job.height <= 0) throw std::invalid_argument("--size must be positive");
+    if (job.samples < 1) throw std::invalid_argument("--samples must be at least 1");
+    Session s{nullptr, scene::io::loadScene(job.scene)};
+    if (s.scene.lights.empty())
+        throw std::invalid_argument(job.scene.string() + ": the scene has no lights: there are no shadows to compare");
+    s.context = platform::EglContext::create(job.eglPlatform);
+    gl::enableDebugOutput();
+    std::error_code ec;
+    fs::create_directories(job.outDir, ec);
+    if (ec) throw std::runtime_error(job.outDir.string() + ": cannot create output directory: " + ec.message());
+    return s;
+}
+
+void writeJson(const fs::path& file, const json& j) {
+    std::ofstream out(file);
+    out << j.dump(2) << "\n";
+    if (!out) throw std::runtime_error(file.string() + ": cannot write");
+}
+
+std::string safeName(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    return s;
+}
+
+}  // namespace
+
+int runReference(const ReportJob& job) {
+    Session s = open(job);
+    Comparison cmp(s.scene, job.width, job.height, job.time);
+    cmp.traceReference(job.samples, true);
+    render::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
+    json lights = json::array();
+    for (std::size_t l = 0; l < s.scene.lights.size(); ++l) {
+        const std::string file = "visibility_" + std::to_string(l) + "_" + safeName(s.scene.lights[l].name) + ".png";
+        render::writePng(job.outDir / file, job.width, job.height,
+                         encodeLinear(cmp.referenceVisibility()[l], job.width, job.height));
+        lights.push_back({{"name", s.scene.lights[l].name}, {"visibility", file}, {"size", s.scene.lights[l].size}});
+    }
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    writeJson(job.outDir / "reference.json",
+              {{"scene", job.scene.string()}, {"width", job.width}, {"height", job.height}, {"time", job.time},
+               {"samples", job.samples}, {"threads", threads}, {"triangles", s.scene.triangleCount()},
+               {"seconds", cmp.referenceSeconds()}, {"lights", lights}});
+    std::printf("reference: %dx%d, %zu triangles, %d samples for area lights, %u threads: %.2f s\n", job.width,
+                job.height, s.scene.triangleCount(), job.samples, threads, cmp.referenceSeconds());
+    std::printf("wrote %s/reference.png, visibility_*.png, reference.json\n", job.outDir.string().c_str());
+    return 0;
+}
+
+int runCompare(const ReportJob& job) {
+    for (const auto& t : job.techniques)
+        if (!isKnownTechnique(t))
+            throw std::invalid_argument("unknown shadow technique '" + t + "'; known: " + shadows::knownTechniqueNames());
+    if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
+    Session s = open(job);
+    Comparison cmp(s.scene, job.width, job.height, job.time);
+    cmp.traceReference(job.samples, true);
+    const auto referenceImage = cmp.shade(cmp.referenceVisibility());
+    render::writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);
+
+    std::vector<std::vector<std::uint8_t>> shaded, heat;
+    json rows = json::array();
+    std::printf("\n%-10s %9s %9s %11s %12s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
+                "colour px", "shadow ms", "frame ms", "MiB");
+    for (const auto& name : job.techniques) {
+        const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames);
+        shaded.push_back(cmp.shade(sc.visibility));
+        heat.push_back(cmp.heatMap(sc));
+        render::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
+        render::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
+        const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
+        std::printf("%-10s %9.4f %9.3f %11.4f %12zu %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
+                    sc.colourError, sc.colouredPixels, sc.shadowMs, sc.totalMs, mib);
+        rows.push_back({{"technique", name}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
+                        {"colour_error", sc.colourError}, {"compared_pixels", sc.pixels},
+                        {"coloured_pixels", sc.colouredPixels}, {"shadow_ms", sc.shadowMs}, {"frame_ms", sc.totalMs},
+                        {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"}});
+    }
+    // Side by side: the reference and each technique on top, their heat maps below.
+    std::vector<const std::vector<std::uint8_t>*> tiles{&referenceImage};
+    for (const auto& img : shaded) tiles.push_back(&img);
+    const std::vector<std::uint8_t> blank(referenceImage.size(), 255);
+    tiles.push_back(&blank);
+    for (const auto& img : heat) tiles.push_back(&img);
+    int mw = 0, mh = 0;
+    const auto sideBySide = montage(tiles, job.width, job.height, static_cast<int>(job.techniques.size()) + 1, mw, mh);
+    render::writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
+
+    writeJson(job.outDir / "compare.json",
+              {{"device", platform::glDeviceDescription()}, {"scene", job.scene.string()}, {"width", job.width},
+               {"height", job.height}, {"time", job.time}, {"samples", job.samples},
+               {"shadow_resolution", job.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},
+               {"wrong_threshold", VisibilityError::kWrongThreshold}, {"techniques", rows}});
+    std::printf("\nreference %.2f s; errors are of light visibility on pixels each light reaches; wrong = off by > %.1f\n",
+                cmp.referenceSeconds(), VisibilityError::kWrongThreshold);
+    std::printf("wrote %s/{compare.json, reference.png, side_by_side.png, <technique>.png, <technique>_heat.png}\n",
+                job.outDir.string().c_str());
+    return 0;
+}
+
+}  // namespace penumbra::reference

@@ -1,0 +1,23 @@
+# `penumbra compare` on the default scene (small size to keep the suite fast): a table on
+# stdout and the files a person wants to look at.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${PENUMBRA}" compare --size 320x180 --timed-frames 1 --out "${OUT}"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "penumbra compare exited with ${rc}: ${err}")
+endif()
+foreach(f compare.json reference.png side_by_side.png hard.png hard_heat.png none.png none_heat.png)
+  if(NOT EXISTS "${OUT}/${f}")
+    message(FATAL_ERROR "missing ${OUT}/${f}")
+  endif()
+endforeach()
+file(READ "${OUT}/compare.json" j)
+string(JSON hard_wrong GET "${j}" techniques 0 wrong_pixel_share)
+string(JSON none_wrong GET "${j}" techniques 1 wrong_pixel_share)
+if(NOT hard_wrong LESS none_wrong)
+  message(FATAL_ERROR "hard (${hard_wrong}) should beat no shadows (${none_wrong})")
+endif()
+if(NOT out MATCHES "technique +RMSE +wrong %")
+  message(FATAL_ERROR "no table printed")
+endif()
