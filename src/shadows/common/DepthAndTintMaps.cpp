@@ -107,8 +107,10 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
             glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE);
             tintProgram_.set("uLightViewProj", vp);
             frame.drawCasters(tintProgram_, Casters::Translucent);
+            // Leave the default blend state for whoever draws next.
             glDisable(GL_BLEND);
             glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ZERO);
             glDepthMask(GL_TRUE);
         }
     }
