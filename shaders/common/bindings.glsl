@@ -1,13 +1,16 @@
 // Texture units and buffer bindings shared by the lighting shader and the shadow lookups.
 // Mirrored in src/render/Bindings.h: change both together.
 #define MAX_LIGHTS 8
-#define MAX_SHADOW_2D 8
-#define MAX_SHADOW_CUBE 4
+#define MAX_SHADOW_2D 4       // shadowed directional / spot / projector lights
+#define MAX_SHADOW_CUBE 2     // shadowed point lights
 #define MAX_PROJECTORS 2
 
 #define UNIT_DIFFUSE 0
 #define UNIT_PROJECTOR 1      // .. +MAX_PROJECTORS
-#define UNIT_SHADOW_2D 4      // .. +MAX_SHADOW_2D
-#define UNIT_SHADOW_CUBE 12   // .. +MAX_SHADOW_CUBE
-#define UNIT_TINT_2D 16       // .. +MAX_SHADOW_2D
-#define UNIT_TINT_CUBE 24     // .. +MAX_SHADOW_CUBE
+#define UNIT_JITTER 3         // 3D jitter texture of the PCF family
+#define UNIT_SHADOW_2D 4      // depth with hardware compare
+#define UNIT_TINT_2D 8        // transmittance of translucent casters
+#define UNIT_RAW_2D 12        // raw depth (no compare) or a technique's moments
+#define UNIT_SHADOW_CUBE 16
+#define UNIT_TINT_CUBE 18
+#define UNIT_RAW_CUBE 20

@@ -131,6 +131,7 @@ int runViewer(const ViewerOptions& opts) {
     render::RenderOptions ro;
     ro.technique = !opts.technique.empty() ? opts.technique : (!scene.technique.empty() ? scene.technique : "hard");
     ro.shadowResolution = opts.shadowResolution;
+    ro.parameters = opts.parameters;
     render::Renderer renderer(scene, ro);
     scene::CameraController controller(scene.camera);
     if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);

@@ -1,6 +1,8 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace penumbra::app {
 
@@ -13,6 +15,7 @@ struct ViewerOptions {
     bool debugContext = false;
     int exitAfterFrames = 0;  // > 0: quit after that many frames (scripted runs, screenshots)
     std::filesystem::path screenshotDir = ".";
+    std::vector<std::pair<std::string, float>> parameters;
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
     std::string technique;
     int shadowRes = 0;
     std::string size;
+    std::vector<std::string> paramTexts;
 
     auto* view = cli.add_subcommand("view", "open a window and fly through a scene");
     app::ViewerOptions viewOpts;
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewOpts.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewOpts.debugContext, "debug GL context with KHR_debug messages");
+    view->add_option("--param", paramTexts, "technique parameter name=value (repeatable)");
 
     auto* rend = cli.add_subcommand("render", "render frames headless (EGL) to PNG + stats.json");
     render::BatchJob job;
@@ -66,6 +68,7 @@ int main(int argc, char** argv) {
     rend->add_option("--fps", job.fps, "frames per second of scene time")->check(CLI::PositiveNumber);
     rend->add_option("--out", job.outDir, "output directory (default ./out)");
     rend->add_flag("--overlay", job.overlay, "draw the light-space debug maps over the frame");
+    rend->add_option("--param", paramTexts, "technique parameter name=value (repeatable)");
     rend->add_option("--egl-platform", job.eglPlatform, "auto | surfaceless | device")
         ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
 
@@ -87,6 +90,7 @@ int main(int argc, char** argv) {
     cmp->add_option("--techniques", techniqueList, "comma-separated technique names (default: all)");
     cmp->add_option("--shadow-res", report.shadowResolution, "shadow-map resolution for every light")
         ->check(CLI::Range(16, 16384));
+    cmp->add_option("--param", paramTexts, "parameter name=value for every technique that has it (repeatable)");
     cmp->add_option("--timed-frames", report.timedFrames, "frames timed per technique (default 3)")
         ->check(CLI::Range(1, 1000));
 
@@ -100,11 +104,15 @@ int main(int argc, char** argv) {
 
     try {
         const std::filesystem::path scene = scenePath.empty() ? scene::io::defaultScenePath() : std::filesystem::path(scenePath);
-        if (!technique.empty()) shadows::createTechnique(technique);  // fail early with the list of names
+        if (!technique.empty() && !shadows::isKnownTechnique(technique))  // fail early, before any GL work
+            throw std::invalid_argument("unknown shadow technique '" + technique + "'; known: " + shadows::knownTechniqueNames());
         if (*techniques) {
             for (const auto& t : shadows::techniqueRegistry()) std::printf("%-10s %s\n", t.name.c_str(), t.description.c_str());
             return 0;
         }
+        std::vector<std::pair<std::string, float>> params;
+        for (const auto& text : paramTexts) params.push_back(shadows::parseParameter(text));
+        viewOpts.parameters = job.parameters = report.parameters = params;
         if (*ref || *cmp) {
             report.scene = scene;
             if (!size.empty()) parseSize(size, report.width, report.height);

@@ -72,6 +72,8 @@ Texture Texture::create2DMultisample(GLenum fmt, int w, int h, int samples) {
                    bytesPerTexel(fmt) * static_cast<std::size_t>(w) * h * samples);
 }
 
+Texture Texture::adopt(GLenum target, GLuint id, int w, int h, std::size_t bytes) { return Texture(target, id, w, h, bytes); }
+
 void Texture::setFilter(GLenum minFilter, GLenum magFilter) {
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));

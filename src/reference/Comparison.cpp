@@ -9,12 +9,6 @@ namespace penumbra::reference {
 
 using render::OutputMode;
 
-bool isKnownTechnique(const std::string& name) {
-    for (const auto& t : shadows::techniqueRegistry())
-        if (t.name == name) return true;
-    return false;
-}
-
 std::vector<glm::vec3> Comparison::capture(render::Renderer& renderer, OutputMode mode, int light) {
     renderer.setOutputMode(mode, light);
     render::OffscreenTarget target(width_, height_);
@@ -61,13 +55,15 @@ void Comparison::traceReference(int samples, bool showProgress) {
     referenceSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-TechniqueScore Comparison::evaluate(const std::string& technique, int shadowResolution, int timedFrames) {
+TechniqueScore Comparison::evaluate(const std::string& technique, int shadowResolution, int timedFrames,
+                                    const std::vector<std::pair<std::string, float>>& parameters) {
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;
     render::RenderOptions options;
     options.technique = technique;
     options.shadowResolution = shadowResolution;
+    options.parameters = parameters;
     render::Renderer renderer(scene_, options);
 
     // Cost of the technique's real frames (shaded, translucency and fog included).

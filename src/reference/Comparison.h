@@ -35,7 +35,8 @@ public:
 
     // Renders `technique`'s visibility for every light and scores it against the reference;
     // `timedFrames` full frames measure its GPU cost.
-    TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames);
+    TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames,
+                            const std::vector<std::pair<std::string, float>>& parameters = {});
 
     // The frame shaded with the given per-light visibility (the reference's or a technique's):
     // ambient + sum(contribution * visibility), fog, background; RGBA8 sRGB top row first.
@@ -61,7 +62,5 @@ private:
     double referenceSeconds_ = 0;
 };
 
-// Whether `name` is in the technique registry (no GL needed).
-bool isKnownTechnique(const std::string& name);
 
 }  // namespace penumbra::reference

@@ -77,7 +77,7 @@ int runReference(const ReportJob& job) {
 
 int runCompare(const ReportJob& job) {
     for (const auto& t : job.techniques)
-        if (!isKnownTechnique(t))
+        if (!shadows::isKnownTechnique(t))
             throw std::invalid_argument("unknown shadow technique '" + t + "'; known: " + shadows::knownTechniqueNames());
     if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
     Session s = open(job);
@@ -91,7 +91,7 @@ int runCompare(const ReportJob& job) {
     std::printf("\n%-10s %9s %9s %11s %12s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
                 "colour px", "shadow ms", "frame ms", "MiB");
     for (const auto& name : job.techniques) {
-        const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames);
+        const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames, job.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
         heat.push_back(cmp.heatMap(sc));
         render::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());

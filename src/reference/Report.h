@@ -17,6 +17,7 @@ struct ReportJob {
     std::vector<std::string> techniques;
     int shadowResolution = 0;
     int timedFrames = 3;
+    std::vector<std::pair<std::string, float>> parameters;  // applied to every technique that has them
 };
 
 // Writes reference.png, visibility_<i>.png per light and reference.json. Returns exit code.

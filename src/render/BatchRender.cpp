@@ -26,6 +26,8 @@ BatchResult renderBatch(const BatchJob& job) {
     options.technique = !job.technique.empty() ? job.technique : (!scene.technique.empty() ? scene.technique : "hard");
     options.shadowResolution = job.shadowResolution;
     options.debugOverlay = job.overlay;
+    options.parameters = job.parameters;
+    options.strictParameters = true;
     Renderer renderer(scene, options);
     OffscreenTarget target(job.width, job.height);
 
@@ -70,6 +72,11 @@ BatchResult renderBatch(const BatchJob& job) {
         {"egl_platform", context->platformName()},
         {"scene", job.scene.string()},
         {"technique", renderer.technique().name()},
+        {"parameters", [&] {
+             nlohmann::json p = nlohmann::json::object();
+             for (const auto& param : renderer.technique().parameters()) p[param.name] = *param.value;
+             return p;
+         }()},
         {"width", job.width},
         {"height", job.height},
         {"triangles", scene.triangleCount()},

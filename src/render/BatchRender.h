@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace penumbra::render {
 
@@ -18,6 +20,7 @@ struct BatchJob {
     bool overlay = false;
     std::filesystem::path outDir = "out";
     std::string eglPlatform = "auto";
+    std::vector<std::pair<std::string, float>> parameters;  // technique parameters
 };
 
 struct BatchResult {

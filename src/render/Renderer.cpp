@@ -10,6 +10,15 @@
 
 namespace penumbra::render {
 
+static void configure(shadows::ShadowTechnique& technique, const RenderOptions& options) {
+    const auto unknown = shadows::applyParameters(technique, options.parameters);
+    if (!options.strictParameters || unknown.empty()) return;
+    std::string known;
+    for (const auto& p : technique.parameters()) known += (known.empty() ? "" : ", ") + p.name;
+    throw std::invalid_argument("technique '" + technique.name() + "' has no parameter '" + unknown.front() +
+                                "'; its parameters: " + (known.empty() ? "none" : known));
+}
+
 static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
     return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
                                .fragment = "shaders/passes/lighting.frag",
@@ -22,6 +31,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
         throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
                                     std::to_string(kMaxLights) + " are supported");
     technique_ = shadows::createTechnique(options_.technique);
+    configure(*technique_, options_);
     lighting_ = buildLighting(*technique_);
     resolve_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/resolve.frag"});
     overlay_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/overlay.frag"});
@@ -35,6 +45,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
 
 void Renderer::setTechnique(const std::string& name) {
     auto technique = shadows::createTechnique(name);
+    configure(*technique, options_);
     gl::Program lighting = buildLighting(*technique);
     technique_ = std::move(technique);
     lighting_ = std::move(lighting);

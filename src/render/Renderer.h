@@ -29,6 +29,10 @@ struct RenderOptions {
     bool debugOverlay = false;
     OutputMode output = OutputMode::Shaded;
     int debugLight = 0;  // which light OutputMode::Visibility shows
+    // Technique parameters ("radius_texels" = 3, ...); names a technique lacks are ignored
+    // unless strictParameters is set (then they are an error naming the known ones).
+    std::vector<std::pair<std::string, float>> parameters;
+    bool strictParameters = false;
 };
 
 struct PassTimes {

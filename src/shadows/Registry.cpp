@@ -1,16 +1,35 @@
 #include "shadows/ShadowTechnique.h"
 #include "shadows/hard/HardShadowMap.h"
 #include "shadows/none/NoShadows.h"
+#include "shadows/pcf/PercentageCloserFilter.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace penumbra::shadows {
+
+static TechniqueInfo pcf(const char* name, const char* description, PercentageCloserFilter::Kernel kernel, int taps) {
+    return {name, description, [=] { return std::make_unique<PercentageCloserFilter>(name, kernel, taps); }};
+}
 
 const std::vector<TechniqueInfo>& techniqueRegistry() {
     static const std::vector<TechniqueInfo> registry = {
         {"hard", "shadow map (Williams 1978), hardware depth compare, coloured tint from translucent casters",
          [] { return std::make_unique<HardShadowMap>(); }},
         {"none", "no shadows: every light reaches every surface", [] { return std::make_unique<NoShadows>(); }},
+        pcf("pcf-grid", "PCF, fixed NxN grid (3x3 = 9 taps)", PercentageCloserFilter::Kernel::Grid, 3),
+        pcf("pcf-bilinear", "PCF, hardware bilinear 2x2 (sampler2DShadow + GL_LINEAR)", PercentageCloserFilter::Kernel::Bilinear, 1),
+        pcf("pcf-gaussian", "PCF, Gaussian-weighted 5x5 grid", PercentageCloserFilter::Kernel::Gaussian, 5),
+        pcf("pcf-poisson16", "PCF, Poisson disk 16 taps (Bridson 2007)", PercentageCloserFilter::Kernel::Poisson, 16),
+        pcf("pcf-poisson20", "PCF, Poisson disk 20 taps", PercentageCloserFilter::Kernel::Poisson, 20),
+        pcf("pcf-poisson32", "PCF, Poisson disk 32 taps", PercentageCloserFilter::Kernel::Poisson, 32),
+        pcf("pcf-random30", "PCF, 30 uniform random taps per pixel", PercentageCloserFilter::Kernel::Random, 30),
+        pcf("pcf-jitter", "PCF, jittered grid warped onto a disk, 3D jitter texture (GPU Gems 2 ch.17, OSG SoftShadowMap)",
+            PercentageCloserFilter::Kernel::Jitter, 32),
+        pcf("pcf-dither", "PCF, two 8-tap offset sets alternating in a checkerboard", PercentageCloserFilter::Kernel::Dither, 16),
+        pcf("pcf-rotated", "PCF, 16-tap Poisson disk rotated per pixel (interleaved gradient noise)",
+            PercentageCloserFilter::Kernel::Rotated, 16),
+        pcf("pcf-adaptive", "PCF, 5-tap edge test, 32-tap Poisson only in the penumbra", PercentageCloserFilter::Kernel::Adaptive, 32),
     };
     return registry;
 }
@@ -19,6 +38,39 @@ std::string knownTechniqueNames() {
     std::string names;
     for (const auto& t : techniqueRegistry()) names += (names.empty() ? "" : ", ") + t.name;
     return names;
+}
+
+std::vector<std::string> applyParameters(ShadowTechnique& technique, const std::vector<std::pair<std::string, float>>& values) {
+    std::vector<std::string> unknown;
+    auto params = technique.parameters();
+    for (const auto& [name, value] : values) {
+        auto it = std::find_if(params.begin(), params.end(), [&](const Parameter& p) { return p.name == name; });
+        if (it == params.end()) {
+            unknown.push_back(name);
+            continue;
+        }
+        *it->value = std::clamp(value, it->min, it->max);
+    }
+    return unknown;
+}
+
+std::pair<std::string, float> parseParameter(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param expects name=value, got '" + text + "'");
+    try {
+        std::size_t used = 0;
+        const float v = std::stof(text.substr(eq + 1), &used);
+        if (used != text.size() - eq - 1) throw std::invalid_argument("");
+        return {text.substr(0, eq), v};
+    } catch (const std::exception&) {
+        throw std::invalid_argument("--param " + text + ": the value is not a number");
+    }
+}
+
+bool isKnownTechnique(const std::string& name) {
+    for (const auto& t : techniqueRegistry())
+        if (t.name == name) return true;
+    return false;
 }
 
 std::unique_ptr<ShadowTechnique> createTechnique(const std::string& name) {

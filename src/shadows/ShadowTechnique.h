@@ -60,6 +60,11 @@ public:
     virtual std::vector<Parameter> parameters() { return {}; }
 };
 
+// Sets the named parameters the technique has; returns the names it does not have.
+std::vector<std::string> applyParameters(ShadowTechnique& technique, const std::vector<std::pair<std::string, float>>& values);
+// Parses "name=value"; throws std::invalid_argument on bad text.
+std::pair<std::string, float> parseParameter(const std::string& text);
+
 struct TechniqueInfo {
     std::string name;
     std::string description;
@@ -70,5 +75,7 @@ const std::vector<TechniqueInfo>& techniqueRegistry();
 // Throws std::invalid_argument listing the known names when `name` is unknown.
 std::unique_ptr<ShadowTechnique> createTechnique(const std::string& name);
 std::string knownTechniqueNames();
+// Registry lookup only: needs no GL context.
+bool isKnownTechnique(const std::string& name);
 
 }  // namespace penumbra::shadows

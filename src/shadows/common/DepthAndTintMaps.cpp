@@ -12,6 +12,14 @@ DepthAndTintMaps::DepthAndTintMaps() {
                                         .fragment = "shaders/passes/shadow_depth.frag"});
     tintProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
                                        .fragment = "shaders/passes/shadow_transmit.frag"});
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    rawSampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 std::vector<int> DepthAndTintMaps::slots(const std::vector<Light>& lights) {
@@ -116,16 +124,18 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
     }
 }
 
-void DepthAndTintMaps::bind(const gl::Program&) const {
+void DepthAndTintMaps::bind(bool rawDepth) const {
     for (std::size_t i = 0; i < slots_.size() && i < maps_.size(); ++i) {
         if (slots_[i] < 0 || maps_[i].depth.id() == 0) continue;
         const auto slot = static_cast<GLuint>(slots_[i]);
-        if (cube_[i]) {
-            maps_[i].depth.bind(render::kUnitShadowCube + slot);
-            maps_[i].tint.bind(render::kUnitTintCube + slot);
+        const GLuint raw = (cube_[i] ? render::kUnitRawCube : render::kUnitRaw2D) + slot;
+        maps_[i].depth.bind((cube_[i] ? render::kUnitShadowCube : render::kUnitShadow2D) + slot);
+        maps_[i].tint.bind((cube_[i] ? render::kUnitTintCube : render::kUnitTint2D) + slot);
+        if (rawDepth) {
+            maps_[i].depth.bind(raw);
+            glBindSampler(raw, rawSampler_.id());
         } else {
-            maps_[i].depth.bind(render::kUnitShadow2D + slot);
-            maps_[i].tint.bind(render::kUnitTint2D + slot);
+            glBindSampler(raw, 0);
         }
     }
 }

@@ -26,13 +26,18 @@ public:
 
     DepthAndTintMaps();
     void render(const ShadowFrame& frame);
-    // Binds light `i`'s maps to the 2D / cube units of its slot (see shaders/common/bindings.glsl).
-    void bind(const gl::Program& lighting) const;
+    // Binds each light's maps to the units of its slot (see shaders/common/bindings.glsl); with
+    // `rawDepth` the depth map is also bound, without comparison, to the raw units.
+    void bind(bool rawDepth = false) const;
     // Shadow slot per light (-1: none) in the order the renderer gives lights; also in the light UBO.
     static std::vector<int> slots(const std::vector<scene::Light>& lights);
     std::size_t memoryBytes() const;
     std::vector<DebugView> debugViews() const;
     void setFiltering(GLenum filter);  // GL_NEAREST (hard) or GL_LINEAR (hardware 2x2 PCF)
+
+    std::size_t lightCount() const { return slots_.size(); }
+    int slot(std::size_t light) const { return slots_[light]; }
+    const LightMaps& maps(std::size_t light) const { return maps_[light]; }
 
 private:
     void ensure(std::size_t light, int resolution, bool cube);
@@ -40,6 +45,7 @@ private:
     std::vector<int> slots_;
     std::vector<bool> cube_;
     gl::Program depthProgram_, tintProgram_;
+    gl::Object<gl::detail::deleteSampler> rawSampler_;  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
 };
 

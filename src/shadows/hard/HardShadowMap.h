@@ -11,7 +11,7 @@ public:
     std::string name() const override { return "hard"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/hard/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override { maps_.render(frame); }
-    void bindLookup(const gl::Program& lighting) const override { maps_.bind(lighting); }
+    void bindLookup(const gl::Program&) const override { maps_.bind(); }
     std::size_t memoryBytes() const override { return maps_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override { return maps_.debugViews(); }
 

@@ -1,0 +1,93 @@
+// Building blocks of filtered shadow lookups: one light's map seen around a receiver point,
+// with taps addressed in shadow-map texels for 2D maps and cube maps alike.
+#include "shadow_coord.glsl"
+#include "shadow_samplers.glsl"
+
+struct ShadowSite {
+    int slot;
+    bool cube;
+    bool inside;
+    vec3 coord;      // 2D: (u, v, reference depth); cube: direction from the light
+    float depth;     // reference depth (window space), bias applied
+    vec3 tangent, bitangent;  // cube: one texel step in direction space
+    float texelWorld;         // world size of one texel at the receiver
+    float resolution;         // texels across the map
+    vec2 depthSlope;          // receiver-plane depth change per texel (2D, Isidoro 2006)
+    vec2 uvDx, uvDy;          // screen-space derivatives of the 2D coordinates (for mipmapped moments)
+};
+
+// Must run in uniform control flow (it takes screen-space derivatives).
+ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
+    LightData L = uLights[light];
+    ShadowSite s;
+    s.slot = int(L.cone.w);
+    s.cube = lightType(light) == LIGHT_POINT;
+    ShadowCoord sc = shadowCoord(L, P, N, NdotL);
+    s.inside = sc.inside && s.slot >= 0;
+    s.coord = s.cube ? sc.uv : vec3(sc.uv.xy, sc.depth);
+    s.depth = sc.depth;
+    s.texelWorld = shadowTexelWorldSize(L, P);
+    float res = L.misc.y;
+    s.resolution = res;
+    vec3 dir = normalize(sc.uv);
+    vec3 helper = abs(dir.y) < 0.99 ? vec3(0, 1, 0) : vec3(1, 0, 0);
+    // A cube face texel spans 2 d / res world units at view depth d = the major axis.
+    float cubeTexel = 2.0 * max(abs(sc.uv.x), max(abs(sc.uv.y), abs(sc.uv.z))) / res;
+    s.tangent = normalize(cross(helper, dir)) * cubeTexel;
+    s.bitangent = normalize(cross(dir, s.tangent)) * cubeTexel;
+    // Receiver-plane depth bias: depth as a linear function of (u, v) across the pixel.
+    vec3 dx = dFdx(vec3(sc.uv.xy, sc.depth)), dy = dFdy(vec3(sc.uv.xy, sc.depth));
+    s.uvDx = dx.xy;
+    s.uvDy = dy.xy;
+    mat2 J = mat2(dx.x, dy.x, dx.y, dy.y);  // rows: d(uv)/dx, d(uv)/dy
+    float det = determinant(J);
+    vec2 slopeUv = abs(det) > 1e-12 ? inverse(J) * vec2(dx.z, dy.z) : vec2(0.0);
+    s.depthSlope = s.cube ? vec2(0.0) : slopeUv / res;
+    return s;
+}
+
+// Hardware comparison at an offset of `texels` (plus a depth offset, e.g. receiver-plane).
+float compareAt(ShadowSite s, vec2 texels, float depthOffset) {
+    if (s.cube) return shadowCompareCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y, s.depth + depthOffset);
+    return shadowCompare2D(s.slot, vec3(s.coord.xy + texels / s.resolution, s.depth + depthOffset));
+}
+
+// Raw (window-space) depth stored at an offset of `texels`.
+float rawDepthAt(ShadowSite s, vec2 texels) {
+    if (s.cube) return shadowRawLodCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y).r;
+    return shadowRawLod2D(s.slot, s.coord.xy + texels / s.resolution).r;
+}
+
+// The translucent tint behind the nearest translucent layer (seed 001's colour map).
+vec3 tintAt(ShadowSite s) {
+    vec4 t = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
+    return s.depth > t.a ? t.rgb : vec3(1.0);
+}
+
+// Linear depth in [0, 1] between the light's near and far planes, from window depth.
+float linearShadowDepth(int light, float windowDepth) {
+    LightData L = uLights[light];
+    if (L.misc.x < 0.5) return windowDepth;
+    float n = L.positionNear.w, f = L.directionFar.w;
+    float d = n * f / (f - windowDepth * (f - n));
+    return (d - n) / (f - n);
+}
+
+// World distance along the light's axis, from window depth.
+float worldShadowDepth(int light, float windowDepth) {
+    LightData L = uLights[light];
+    float n = L.positionNear.w, f = L.directionFar.w;
+    if (L.misc.x < 0.5) return n + windowDepth * (f - n);
+    return n * f / (f - windowDepth * (f - n));
+}
+
+// Interleaved gradient noise (Jimenez 2014): a cheap per-pixel value with no visible pattern.
+float interleavedGradientNoise(vec2 pixel) {
+    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+// Integer hash (PCG-like) -> [0, 1): per-pixel, per-tap random numbers.
+float hashToUnit(uint x) {
+    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+    return float(x >> 8) * (1.0 / 16777216.0);
+}
