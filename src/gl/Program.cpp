@@ -153,6 +153,7 @@ GLint Program::location(const char* name) const {
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
 void Program::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::ivec2& v) const { glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec3& v) const { glProgramUniform3fv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec4& v) const { glProgramUniform4fv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::mat4& v) const {

@@ -68,7 +68,7 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
 
     // Cost of the technique's real frames (shaded, translucency and fog included).
     render::OffscreenTarget target(width_, height_);
-    renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());  // warm-up
+    if (timedFrames > 0) renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());  // warm-up
     for (int f = 0; f < timedFrames; ++f) {
         renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());
         score.shadowMs += renderer.lastTimes().shadowMs / timedFrames;

@@ -34,7 +34,7 @@ public:
     double referenceSeconds() const { return referenceSeconds_; }
 
     // Renders `technique`'s visibility for every light and scores it against the reference;
-    // `timedFrames` full frames measure its GPU cost.
+    // `timedFrames` full frames (after one warm-up; 0: none) measure its GPU cost.
     TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames,
                             const std::vector<std::pair<std::string, float>>& parameters = {});
 

@@ -18,6 +18,7 @@ struct Draw {
     glm::mat4 model;
     bool translucent;
     bool castsShadow;
+    bool visible;
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
 };
 

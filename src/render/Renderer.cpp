@@ -160,7 +160,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         glDepthMask(GL_FALSE);
     }
     for (const Draw& d : draws)
-        if (d.translucent == translucent) gpu_.draw(d, lighting_);
+        if (d.translucent == translucent && d.visible) gpu_.draw(d, lighting_);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 }

@@ -23,6 +23,7 @@ struct Object {
     glm::vec3 scale{1.0f};
     Animation animation;
     bool castsShadow = true;
+    bool visible = true;  // false: a shadow-only caster the camera does not see
 
     glm::mat4 transformAt(float time) const;
 };

@@ -1,7 +1,9 @@
 #include "shadows/ShadowTechnique.h"
 #include "shadows/hard/HardShadowMap.h"
+#include "shadows/moments/MomentShadowMap.h"
 #include "shadows/none/NoShadows.h"
 #include "shadows/pcf/PercentageCloserFilter.h"
+#include "shadows/pcss/PercentageCloserSoftShadows.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,6 +12,10 @@ namespace penumbra::shadows {
 
 static TechniqueInfo pcf(const char* name, const char* description, PercentageCloserFilter::Kernel kernel, int taps) {
     return {name, description, [=] { return std::make_unique<PercentageCloserFilter>(name, kernel, taps); }};
+}
+
+static TechniqueInfo moments(const char* name, const char* description, MomentShadowMap::Warp warp) {
+    return {name, description, [=] { return std::make_unique<MomentShadowMap>(name, warp); }};
 }
 
 const std::vector<TechniqueInfo>& techniqueRegistry() {
@@ -30,6 +36,18 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
         pcf("pcf-rotated", "PCF, 16-tap Poisson disk rotated per pixel (interleaved gradient noise)",
             PercentageCloserFilter::Kernel::Rotated, 16),
         pcf("pcf-adaptive", "PCF, 5-tap edge test, 32-tap Poisson only in the penumbra", PercentageCloserFilter::Kernel::Adaptive, 32),
+        {"pcss", "percentage-closer soft shadows (Fernando 2005): blocker search, variable-size penumbra",
+         [] { return std::make_unique<PercentageCloserSoftShadows>(); }},
+        {"distance", "seed 001: three 3x3 kernels chosen by caster-receiver distance",
+         [] { return std::make_unique<DistanceSoftenedShadows>(); }},
+        moments("vsm", "variance shadow maps (Donnelly & Lauritzen 2006), Gaussian pre-blur, mipmaps, bleeding reduction",
+                MomentShadowMap::Warp::Variance),
+        moments("esm", "exponential shadow maps (Annen et al. 2008)", MomentShadowMap::Warp::Exponential),
+        moments("evsm2", "exponential variance shadow maps, positive warp (2 components)",
+                MomentShadowMap::Warp::ExponentialVariance2),
+        moments("evsm4", "exponential variance shadow maps, both warps (4 components)",
+                MomentShadowMap::Warp::ExponentialVariance4),
+        moments("msm", "moment shadow maps, Hamburger 4MSM (Peters & Klein 2015)", MomentShadowMap::Warp::Moments4),
     };
     return registry;
 }

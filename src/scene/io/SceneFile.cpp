@@ -255,7 +255,7 @@ Animation readAnimation(const Reader& r, const json& j, const std::string& p) {
 
 void readObject(const Reader& r, const json& j, const std::string& p, Scene& scene) {
     r.allowKeys(j, p, {"name", "model", "shape", "size", "radius", "position", "rotation_deg", "scale", "material",
-                       "animation", "cast_shadows"});
+                       "animation", "cast_shadows", "visible"});
     Object o;
     const bool hasModel = j.contains("model"), hasShape = j.contains("shape");
     if (hasModel == hasShape) r.fail(p, "", "an object needs exactly one of 'model' or 'shape'");
@@ -292,7 +292,11 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
     o.scale = r.vec3(j, "scale", p, o.scale);
     if (j.contains("material")) o.materialOverride = readMaterial(r, j["material"], p + ".material", scene);
     if (j.contains("animation")) o.animation = readAnimation(r, j["animation"], p + ".animation");
-    if (j.contains("cast_shadows")) o.castsShadow = j["cast_shadows"].is_boolean() && j["cast_shadows"].get<bool>();
+    for (const auto& [key, flag] : {std::pair<const char*, bool*>{"cast_shadows", &o.castsShadow}, {"visible", &o.visible}}) {
+        if (!j.contains(key)) continue;
+        if (!j[key].is_boolean()) r.fail(p, key, std::string("'") + key + "' must be true or false");
+        *flag = j[key].get<bool>();
+    }
     scene.objects.push_back(std::move(o));
 }
 

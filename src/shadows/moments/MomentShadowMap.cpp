@@ -1,0 +1,174 @@
+#include "shadows/moments/MomentShadowMap.h"
+
+#include "gl/Debug.h"
+#include "render/Bindings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::shadows {
+
+MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
+    : name_(std::move(name)), warp_(warp),
+      // ESM stores one exponential: c = 80 keeps e^{c} within fp32 for x in [-1, 1].
+      // EVSM stores the square too, so c+ = 40 (e^{80} < 3.4e38).
+      positiveExponent_(warp == Warp::Exponential ? 80.0f : 40.0f),
+      bleedReduction_(warp == Warp::Variance ? 0.2f : 0.0f) {
+    toMoments_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/moments.frag"});
+    blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/blur.frag"});
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    depthSampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+std::vector<Parameter> MomentShadowMap::parameters() {
+    std::vector<Parameter> p{{"blur_radius", &blurRadius_, 0, 16}, {"fp16", &fp16_, 0, 1}, {"mipmaps", &mipmaps_, 0, 1}};
+    if (warp_ == Warp::Variance || warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) {
+        p.push_back({"min_variance", &minVariance_, 0.0f, 1e-2f});
+        p.push_back({"bleed_reduction", &bleedReduction_, 0.0f, 0.95f});
+    }
+    if (warp_ != Warp::Variance && warp_ != Warp::Moments4) p.push_back({"exponent", &positiveExponent_, 1.0f, 88.0f});
+    if (warp_ == Warp::ExponentialVariance4) p.push_back({"negative_exponent", &negativeExponent_, 1.0f, 40.0f});
+    if (warp_ == Warp::Moments4) p.push_back({"moment_bias", &momentBias_, 0.0f, 1e-2f});
+    return p;
+}
+
+GLenum MomentShadowMap::format() const {
+    const bool half = fp16_ > 0.5f;
+    switch (warp_) {
+        case Warp::Variance: return half ? GL_RG16F : GL_RG32F;
+        case Warp::Exponential: return half ? GL_R16F : GL_R32F;
+        case Warp::ExponentialVariance2: return half ? GL_RG16F : GL_RG32F;
+        default: return half ? GL_RGBA16F : GL_RGBA32F;
+    }
+}
+
+// 2D views let one pass read or write a single cube face (glTextureView needs glGen'd names).
+static gl::Texture view(const gl::Texture& source, GLenum format, int layer, int res) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glTextureView(id, GL_TEXTURE_2D, source.id(), format, 0, 1, static_cast<GLuint>(layer), 1);
+    return gl::Texture::adopt(GL_TEXTURE_2D, id, res, res, 0);
+}
+
+void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& depth) {
+    if (moments_.size() <= i) moments_.resize(i + 1);
+    LightMoments& m = moments_[i];
+    const int levels = mipmaps_ > 0.5f ? 1 + static_cast<int>(std::log2(depth.resolution)) : 1;
+    if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format() && m.levels == levels) return;
+    m = LightMoments{};
+    m.resolution = depth.resolution;
+    m.cube = depth.cube;
+    m.format = format();
+    m.levels = levels;
+    const int res = depth.resolution;
+    if (m.cube) {
+        GLuint id = 0;
+        glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
+        glTextureStorage2D(id, levels, m.format, res, res);
+        std::size_t bytes = 0;
+        for (int l = 0, s = res; l < levels; ++l, s = std::max(1, s / 2)) bytes += 6u * gl::bytesPerTexel(m.format) * s * s;
+        m.moments = gl::Texture::adopt(GL_TEXTURE_CUBE_MAP, id, res, res, bytes);
+    } else {
+        m.moments = gl::Texture::create2D(m.format, res, res, levels);
+    }
+    m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+    if (levels > 1) glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, 16.0f);
+    m.moments.setWrap(GL_CLAMP_TO_EDGE);
+    m.scratch = gl::Texture::create2D(m.format, res, res);
+    m.scratchTarget.attach(GL_COLOR_ATTACHMENT0, m.scratch);
+    m.scratchTarget.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
+        m.depthFaces.push_back(view(depth.depth, GL_DEPTH_COMPONENT32F, f, res));
+        m.momentFaces.push_back(view(m.moments, m.format, f, res));
+        gl::Framebuffer fb;
+        if (m.cube) fb.attachLayer(GL_COLOR_ATTACHMENT0, m.moments, f);
+        else fb.attach(GL_COLOR_ATTACHMENT0, m.moments);
+        fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        fb.checkComplete("moment map");
+        m.momentTargets.push_back(std::move(fb));
+    }
+}
+
+void MomentShadowMap::convert(std::size_t i, const LightSpace& space) {
+    LightMoments& m = moments_[i];
+    const int res = m.resolution;
+    glViewport(0, 0, res, res);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    toMoments_.set("uWarp", static_cast<int>(warp_));
+    toMoments_.set("uPerspective", space.perspective ? 1 : 0);
+    toMoments_.set("uNear", space.near);
+    toMoments_.set("uFar", space.far);
+    toMoments_.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));
+    const int radius = static_cast<int>(std::lround(blurRadius_));
+    for (std::size_t f = 0; f < m.momentTargets.size(); ++f) {
+        m.momentTargets[f].bind();
+        toMoments_.use();
+        glBindSampler(0, depthSampler_.id());
+        m.depthFaces[f].bind(0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindSampler(0, 0);
+        if (radius > 0) {  // separable Gaussian: map -> scratch (x), scratch -> map (y)
+            blur_.set("uRadius", radius);
+            blur_.use();
+            m.scratchTarget.bind();
+            blur_.set("uDirection", glm::ivec2(1, 0));
+            m.momentFaces[f].bind(0);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            m.momentTargets[f].bind();
+            blur_.set("uDirection", glm::ivec2(0, 1));
+            m.scratch.bind(0);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+    }
+    if (m.levels > 1) glGenerateTextureMipmap(m.moments.id());
+    glEnable(GL_DEPTH_TEST);
+}
+
+void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
+    maps_.render(frame);
+    gl::DebugGroup group("moments");
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    for (std::size_t i = 0; i < maps_.lightCount(); ++i) {
+        if (maps_.slot(i) < 0) continue;
+        ensure(i, maps_.maps(i));
+        convert(i, (*frame.lightSpaces)[i]);
+    }
+    glDeleteVertexArrays(1, &vao);
+}
+
+void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
+    maps_.bind();
+    for (std::size_t i = 0; i < maps_.lightCount() && i < moments_.size(); ++i) {
+        if (maps_.slot(i) < 0 || !moments_[i].moments.id()) continue;
+        const GLuint unit = (moments_[i].cube ? render::kUnitRawCube : render::kUnitRaw2D) + static_cast<GLuint>(maps_.slot(i));
+        moments_[i].moments.bind(unit);
+    }
+    lighting.set("uWarp", static_cast<int>(warp_));
+    lighting.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));
+    lighting.set("uMinVariance", minVariance_);
+    lighting.set("uBleedReduction", bleedReduction_);
+    lighting.set("uMomentBias", momentBias_);
+}
+
+std::size_t MomentShadowMap::memoryBytes() const {
+    std::size_t total = maps_.memoryBytes();
+    for (const auto& m : moments_) total += m.moments.memoryBytes() + m.scratch.memoryBytes();
+    return total;
+}
+
+std::vector<DebugView> MomentShadowMap::debugViews() const {
+    std::vector<DebugView> views = maps_.debugViews();
+    for (std::size_t i = 0; i < moments_.size(); ++i)
+        if (moments_[i].moments.id() && !moments_[i].cube)
+            views.push_back({"light " + std::to_string(i) + " moments", moments_[i].moments.id(), GL_TEXTURE_2D, false, 0});
+    return views;
+}
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,60 @@
+// Filterable shadow maps: the map stores moments of the occluder depth distribution, filtered
+// like any texture (blur, mipmaps, anisotropy), and the lookup bounds the lit fraction.
+#include "shaders/common/shadow_filtering.glsl"
+
+uniform int uWarp;              // as shaders/passes/moments.frag
+uniform vec2 uExponents;        // c+, c-
+uniform float uMinVariance;
+uniform float uBleedReduction;  // Lauritzen's light-bleeding reduction: linstep(amount, 1, p_max)
+uniform float uMomentBias;      // MSM
+
+// One-sided Chebyshev: p_max = σ² / (σ² + (t - μ)²); lit = 1 when t <= μ (Donnelly & Lauritzen).
+float chebyshev(vec2 m, float t, float minVariance) {
+    if (t <= m.x) return 1.0;
+    float variance = max(m.y - m.x * m.x, minVariance);
+    float d = t - m.x;
+    float p = variance / (variance + d * d);
+    return clamp((p - uBleedReduction) / (1.0 - uBleedReduction), 0.0, 1.0);
+}
+
+// Hamburger 4MSM (Peters & Klein 2015, algorithm 2): the shadow intensity bound from four
+// moments of depth in [0, 1].
+float momentShadowIntensity(vec4 b, float zf) {
+    b = mix(b, vec4(0.5), uMomentBias);
+    mat3 B = mat3(1.0, b.x, b.y, b.x, b.y, b.z, b.y, b.z, b.w);
+    vec3 c = inverse(B) * vec3(1.0, zf, zf * zf);
+    float disc = max(c.y * c.y - 4.0 * c.z * c.x, 0.0);
+    float r = sqrt(disc);
+    float z2 = (-c.y - r) / (2.0 * c.z), z3 = (-c.y + r) / (2.0 * c.z);
+    if (z2 > z3) { float tmp = z2; z2 = z3; z3 = tmp; }
+    if (zf <= z2) return 0.0;
+    if (zf <= z3) return clamp((zf * z3 - b.x * (zf + z3) + b.y) / ((z3 - z2) * (zf - z2)), 0.0, 1.0);
+    return clamp(1.0 - (z2 * z3 - b.x * (z2 + z3) + b.y) / ((zf - z2) * (zf - z3)), 0.0, 1.0);
+}
+
+vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
+    ShadowSite s = shadowSite(light, P, N, NdotL);
+    // Sample before any branch: mipmapped lookups need derivatives from uniform control flow.
+    vec3 dirDx = dFdx(s.coord), dirDy = dFdy(s.coord);
+    vec4 m = s.cube ? shadowRawCube(s.slot, s.coord, dirDx, dirDy) : shadowRaw2D(s.slot, s.coord.xy, s.uvDx, s.uvDy);
+    if (!s.inside) return vec3(1.0);
+    float t = linearShadowDepth(light, s.depth);
+    float x = 2.0 * t - 1.0;
+    float lit;
+    if (uWarp == 0) {
+        lit = chebyshev(m.xy, x, uMinVariance);
+    } else if (uWarp == 1) {
+        lit = clamp(m.x * exp(-uExponents.x * x), 0.0, 1.0);
+    } else if (uWarp == 2 || uWarp == 3) {
+        // Variance is warped too: scale the minimum by the warp's slope squared.
+        float p = exp(uExponents.x * x);
+        lit = chebyshev(m.xy, p, uMinVariance * pow(uExponents.x * p, 2.0));
+        if (uWarp == 3) {
+            float n = -exp(-uExponents.y * x);
+            lit = min(lit, chebyshev(m.zw, n, uMinVariance * pow(uExponents.y * n, 2.0)));
+        }
+    } else {
+        lit = 1.0 - momentShadowIntensity(m, t);
+    }
+    return lit * tintAt(s);
+}
