@@ -38,6 +38,7 @@ public:
     std::size_t lightCount() const { return slots_.size(); }
     int slot(std::size_t light) const { return slots_[light]; }
     const LightMaps& maps(std::size_t light) const { return maps_[light]; }
+    const gl::Program& depthProgram() const { return depthProgram_; }  // opaque casters -> depth
 
 private:
     void ensure(std::size_t light, int resolution, bool cube);

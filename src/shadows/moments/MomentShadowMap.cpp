@@ -25,7 +25,8 @@ MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
 }
 
 std::vector<Parameter> MomentShadowMap::parameters() {
-    std::vector<Parameter> p{{"blur_radius", &blurRadius_, 0, 16}, {"fp16", &fp16_, 0, 1}, {"mipmaps", &mipmaps_, 0, 1}};
+    std::vector<Parameter> p{{"blur_radius", &blurRadius_, 0, 16}, {"fp16", &fp16_, 0, 1}, {"mipmaps", &mipmaps_, 0, 1},
+                             {"msaa", &msaa_, 0, 1}};
     if (warp_ == Warp::Variance || warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) {
         p.push_back({"min_variance", &minVariance_, 0.0f, 1e-2f});
         p.push_back({"bleed_reduction", &bleedReduction_, 0.0f, 0.95f});
@@ -58,7 +59,10 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     if (moments_.size() <= i) moments_.resize(i + 1);
     LightMoments& m = moments_[i];
     const int levels = mipmaps_ > 0.5f ? 1 + static_cast<int>(std::log2(depth.resolution)) : 1;
-    if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format() && m.levels == levels) return;
+    const bool msaa = msaa_ > 0.5f;
+    if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format() && m.levels == levels &&
+        (m.multisampledDepth.id() != 0) == msaa)
+        return;
     m = LightMoments{};
     m.resolution = depth.resolution;
     m.cube = depth.cube;
@@ -81,6 +85,12 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.scratch = gl::Texture::create2D(m.format, res, res);
     m.scratchTarget.attach(GL_COLOR_ATTACHMENT0, m.scratch);
     m.scratchTarget.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    if (msaa) {  // llvmpipe offers at most 4 samples
+        m.multisampledDepth = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, res, res, 4);
+        m.multisampledTarget.attach(GL_DEPTH_ATTACHMENT, m.multisampledDepth);
+        m.multisampledTarget.setNoColor();
+        m.multisampledTarget.checkComplete("multisampled moment depth");
+    }
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
         m.depthFaces.push_back(view(depth.depth, GL_DEPTH_COMPONENT32F, f, res));
         m.momentFaces.push_back(view(m.moments, m.format, f, res));
@@ -93,8 +103,10 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     }
 }
 
-void MomentShadowMap::convert(std::size_t i, const LightSpace& space) {
+void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
+    const LightSpace& space = (*frame.lightSpaces)[i];
+    const scene::Light& light = (*frame.lights)[i];
     const int res = m.resolution;
     glViewport(0, 0, res, res);
     glDisable(GL_DEPTH_TEST);
@@ -105,7 +117,24 @@ void MomentShadowMap::convert(std::size_t i, const LightSpace& space) {
     toMoments_.set("uFar", space.far);
     toMoments_.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));
     const int radius = static_cast<int>(std::lround(blurRadius_));
+    const bool msaa = m.multisampledDepth.id() != 0;
+    toMoments_.set("uSamples", msaa ? 4 : 0);
     for (std::size_t f = 0; f < m.momentTargets.size(); ++f) {
+        if (msaa) {  // the opaque casters again, into the 4x multisampled depth map of this face
+            m.multisampledTarget.bind();
+            const float farDepth = 1.0f;
+            glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
+            glEnable(GL_DEPTH_TEST);
+            glDepthMask(GL_TRUE);
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
+            maps_.depthProgram().set("uLightViewProj", space.viewProj[f]);
+            frame.drawCasters(maps_.depthProgram(), Casters::Opaque);
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glDisable(GL_DEPTH_TEST);
+            fullscreenVao_.bind();
+            m.multisampledDepth.bind(1);
+        }
         m.momentTargets[f].bind();
         toMoments_.use();
         glBindSampler(0, depthSampler_.id());
@@ -132,15 +161,12 @@ void MomentShadowMap::convert(std::size_t i, const LightSpace& space) {
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);
     gl::DebugGroup group("moments");
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    glBindVertexArray(vao);
+    fullscreenVao_.bind();
     for (std::size_t i = 0; i < maps_.lightCount(); ++i) {
         if (maps_.slot(i) < 0) continue;
         ensure(i, maps_.maps(i));
-        convert(i, (*frame.lightSpaces)[i]);
+        convert(i, frame);
     }
-    glDeleteVertexArrays(1, &vao);
 }
 
 void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
@@ -159,7 +185,8 @@ void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
 
 std::size_t MomentShadowMap::memoryBytes() const {
     std::size_t total = maps_.memoryBytes();
-    for (const auto& m : moments_) total += m.moments.memoryBytes() + m.scratch.memoryBytes();
+    for (const auto& m : moments_)
+        total += m.moments.memoryBytes() + m.scratch.memoryBytes() + m.multisampledDepth.memoryBytes();
     return total;
 }
 

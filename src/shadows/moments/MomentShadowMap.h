@@ -1,6 +1,7 @@
 #pragma once
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
+#include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
 
@@ -33,19 +34,22 @@ private:
         std::vector<gl::Texture> depthFaces, momentFaces;  // 2D views of each face (cube) or of the map
         std::vector<gl::Framebuffer> momentTargets;    // one per face
         gl::Framebuffer scratchTarget;
+        gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
+        gl::Framebuffer multisampledTarget;
     };
     GLenum format() const;
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
-    void convert(std::size_t light, const LightSpace& space);
+    void convert(std::size_t light, const ShadowFrame& frame);
 
     std::string name_;
     Warp warp_;
-    float blurRadius_ = 2, fp16_ = 0, mipmaps_ = 1, positiveExponent_, negativeExponent_ = 5;
+    float blurRadius_ = 2, fp16_ = 0, mipmaps_ = 1, msaa_ = 0, positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_;
     gl::Object<gl::detail::deleteSampler> depthSampler_;
+    gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
 };
 
 }  // namespace penumbra::shadows
