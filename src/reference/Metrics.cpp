@@ -72,6 +72,20 @@ std::vector<std::uint8_t> encodeLinear(const std::vector<glm::vec3>& v, int w, i
     return encode(w, h, [&](std::size_t i) { return v[i]; });
 }
 
+std::vector<std::uint8_t> halve(const std::vector<std::uint8_t>& in, int w, int h) {
+    const int hw = w / 2, hh = h / 2;
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(hw) * hh * 4);
+    for (int y = 0; y < hh; ++y)
+        for (int x = 0; x < hw; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = 0;
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx) sum += in[((static_cast<std::size_t>(2 * y + dy) * w) + 2 * x + dx) * 4 + c];
+                out[(static_cast<std::size_t>(y) * hw + x) * 4 + c] = static_cast<std::uint8_t>((sum + 2) / 4);
+            }
+    return out;
+}
+
 std::vector<std::uint8_t> montage(const std::vector<const std::vector<std::uint8_t>*>& images, int w, int h, int columns,
                                   int& outW, int& outH) {
     const int gap = 8;

@@ -39,6 +39,9 @@ std::vector<std::uint8_t> encodeSrgb(const std::vector<glm::vec3>& linear, int w
 // Linear values written as-is (visibility maps: 0.5 -> 128), top row first.
 std::vector<std::uint8_t> encodeLinear(const std::vector<glm::vec3>& values, int width, int height);
 
+// Half-size copy of an RGBA8 image (2x2 box filter); width and height become w/2, h/2.
+std::vector<std::uint8_t> halve(const std::vector<std::uint8_t>& rgba, int width, int height);
+
 // Several RGBA8 images of one size side by side (with a gap), in rows of `columns`.
 std::vector<std::uint8_t> montage(const std::vector<const std::vector<std::uint8_t>*>& images, int width, int height,
                                   int columns, int& outWidth, int& outHeight);

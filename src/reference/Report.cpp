@@ -88,7 +88,7 @@ int runCompare(const ReportJob& job) {
 
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
-    std::printf("\n%-10s %9s %9s %11s %12s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
+    std::printf("\n%-14s %9s %9s %11s %12s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
                 "colour px", "shadow ms", "frame ms", "MiB");
     for (const auto& name : job.techniques) {
         const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames, job.parameters);
@@ -97,21 +97,29 @@ int runCompare(const ReportJob& job) {
         render::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
         render::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
-        std::printf("%-10s %9.4f %9.3f %11.4f %12zu %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
+        std::printf("%-14s %9.4f %9.3f %11.4f %12zu %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
                     sc.colourError, sc.colouredPixels, sc.shadowMs, sc.totalMs, mib);
         rows.push_back({{"technique", name}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
                         {"colour_error", sc.colourError}, {"compared_pixels", sc.pixels},
                         {"coloured_pixels", sc.colouredPixels}, {"shadow_ms", sc.shadowMs}, {"frame_ms", sc.totalMs},
                         {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"}});
     }
-    // Side by side: the reference and each technique on top, their heat maps below.
-    std::vector<const std::vector<std::uint8_t>*> tiles{&referenceImage};
-    for (const auto& img : shaded) tiles.push_back(&img);
-    const std::vector<std::uint8_t> blank(referenceImage.size(), 255);
-    tiles.push_back(&blank);
-    for (const auto& img : heat) tiles.push_back(&img);
+    // Side by side: cells of (image over heat map) at half size, five to a row; the reference's
+    // cell holds the reference image over a blank.
+    const int tw = job.width / 2, th = job.height / 2;
+    std::vector<std::vector<std::uint8_t>> cells;
+    auto cell = [&](const std::vector<std::uint8_t>& top, const std::vector<std::uint8_t>& bottom) {
+        std::vector<std::uint8_t> c = halve(top, job.width, job.height);
+        const auto b = halve(bottom, job.width, job.height);
+        c.insert(c.end(), b.begin(), b.end());
+        cells.push_back(std::move(c));
+    };
+    cell(referenceImage, std::vector<std::uint8_t>(referenceImage.size(), 255));
+    for (std::size_t k = 0; k < shaded.size(); ++k) cell(shaded[k], heat[k]);
+    std::vector<const std::vector<std::uint8_t>*> tiles;
+    for (const auto& c : cells) tiles.push_back(&c);
     int mw = 0, mh = 0;
-    const auto sideBySide = montage(tiles, job.width, job.height, static_cast<int>(job.techniques.size()) + 1, mw, mh);
+    const auto sideBySide = montage(tiles, tw, 2 * th, std::min<int>(5, static_cast<int>(cells.size())), mw, mh);
     render::writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
 
     writeJson(job.outDir / "compare.json",
