@@ -14,6 +14,10 @@ struct ShadowSite {
     float resolution;         // texels across the map
     vec2 depthSlope;          // receiver-plane depth change per texel (2D, Isidoro 2006)
     vec2 uvDx, uvDy;          // screen-space derivatives of the 2D coordinates (for mipmapped moments)
+    // Cube maps: the receiver's plane (through the lookup point, relative to the light) and the
+    // bias already subtracted from `depth`, for per-tap receiver-plane depths.
+    vec3 planePoint, planeNormal;
+    float near, far, depthBias;
 };
 
 // Must run in uniform control flow (it takes screen-space derivatives).
@@ -43,7 +47,26 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     float det = determinant(J);
     vec2 slopeUv = abs(det) > 1e-12 ? inverse(J) * vec2(dx.z, dy.z) : vec2(0.0);
     s.depthSlope = s.cube ? vec2(0.0) : slopeUv / res;
+    s.planePoint = sc.uv;  // cube: offset lookup point minus the light position
+    s.planeNormal = N;
+    s.near = L.positionNear.w;
+    s.far = L.directionFar.w;
+    s.depthBias = s.cube ? perspectiveWindowDepth(lightViewDepth(L, L.positionNear.xyz + sc.uv), s.near, s.far) - sc.depth : 0.0;
     return s;
+}
+
+// The receiver's own depth at a tap `texels` away, extrapolated along its plane (receiver-plane
+// depth bias; Isidoro 2006 for 2D maps, an exact ray-plane intersection for cube faces), so wide
+// kernels do not shadow sloped receivers with themselves. Clamped against grazing planes.
+float tapReceiverDepth(ShadowSite s, vec2 texels) {
+    if (!s.cube) return s.depth + clamp(dot(s.depthSlope, texels), -0.01, 0.01);
+    vec3 d = s.coord + s.tangent * texels.x + s.bitangent * texels.y;
+    float denom = dot(d, s.planeNormal);
+    float k = abs(denom) > 1e-8 ? dot(s.planePoint, s.planeNormal) / denom : 1.0;
+    if (k <= 0.0) return s.depth;
+    vec3 q = abs(d * k);
+    float depth = perspectiveWindowDepth(max(q.x, max(q.y, q.z)), s.near, s.far) - s.depthBias;
+    return clamp(depth, s.depth - 0.01, s.depth + 0.01);
 }
 
 // Hardware comparison at an offset of `texels` (plus a depth offset, e.g. receiver-plane).

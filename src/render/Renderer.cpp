@@ -98,6 +98,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         shadows::ShadowFrame frame;
         frame.lights = &scene_.lights;
         frame.lightSpaces = &spaces;
+        frame.frameIndex = frameIndex_++;
         frame.drawCasters = [&](const gl::Program& program, shadows::Casters casters) {
             const bool wantTranslucent = casters == shadows::Casters::Translucent;
             for (const Draw& d : draws)

@@ -84,6 +84,7 @@ private:
     int targetW_ = 0, targetH_ = 0;
     std::array<gl::TimerQuery, 4> timers_;
     PassTimes times_;
+    std::uint32_t frameIndex_ = 0;
 };
 
 }  // namespace penumbra::render

@@ -1,4 +1,5 @@
 #include "shadows/ShadowTechnique.h"
+#include "shadows/cssm/ColoredStochasticShadowMap.h"
 #include "shadows/hard/HardShadowMap.h"
 #include "shadows/moments/MomentShadowMap.h"
 #include "shadows/none/NoShadows.h"
@@ -48,6 +49,10 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
         moments("evsm4", "exponential variance shadow maps, both warps (4 components)",
                 MomentShadowMap::Warp::ExponentialVariance4),
         moments("msm", "moment shadow maps, Hamburger 4MSM (Peters & Klein 2015)", MomentShadowMap::Warp::Moments4),
+        {"cssm1", "coloured stochastic shadow maps (McGuire & Enderton 2011), one map per channel",
+         [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::PerChannel); }},
+        {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (seed 000 ch. 5)",
+         [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::Rgb); }},
     };
     return registry;
 }

@@ -8,6 +8,7 @@
 #include "shadows/LightSpace.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -27,6 +28,7 @@ struct ShadowFrame {
     // Draws the chosen casters with `program` bound (uModel and material uniforms are set,
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
     std::function<void(const gl::Program& program, Casters casters)> drawCasters;
+    std::uint32_t frameIndex = 0;  // seeds per-frame randomness (stochastic techniques)
 };
 
 // A texture worth showing in the debug overlay.

@@ -28,11 +28,12 @@ const char* kAreaLightScene = R"({
 // 1.25x its measurement: a real regression (a lost shadow, a broken filter) moves these by whole
 // percent (no shadows: 2.41%), rounding differences between drivers by hundredths.
 const std::map<std::string, double> kMeasuredWrongPercent = {
-    {"hard", 1.084},          {"pcf-grid", 1.066},     {"pcf-bilinear", 1.072}, {"pcf-gaussian", 1.056},
-    {"pcf-poisson16", 1.069}, {"pcf-poisson20", 1.071}, {"pcf-poisson32", 1.055}, {"pcf-random30", 1.056},
-    {"pcf-jitter", 1.051},    {"pcf-dither", 1.068},   {"pcf-rotated", 1.058},  {"pcf-adaptive", 1.055},
-    {"pcss", 0.696},          {"distance", 1.059},     {"vsm", 1.131},          {"esm", 1.598},
-    {"evsm2", 1.054},         {"evsm4", 1.045},        {"msm", 1.064},
+    {"hard", 1.084},          {"pcf-grid", 1.019},      {"pcf-bilinear", 1.072},  {"pcf-gaussian", 1.019},
+    {"pcf-poisson16", 1.046}, {"pcf-poisson20", 1.052}, {"pcf-poisson32", 1.026}, {"pcf-random30", 1.024},
+    {"pcf-jitter", 1.008},    {"pcf-dither", 1.052},    {"pcf-rotated", 1.045},   {"pcf-adaptive", 1.026},
+    {"pcss", 0.696},          {"distance", 1.059},      {"vsm", 1.131},           {"esm", 1.598},
+    {"evsm2", 1.054},         {"evsm4", 1.045},         {"msm", 1.064},           {"cssm1", 0.912},
+    {"cssm2", 0.915},
 };
 
 TEST(SoftShadows, EveryTechniqueAgainstTheAreaLightReference) {
@@ -47,7 +48,10 @@ TEST(SoftShadows, EveryTechniqueAgainstTheAreaLightReference) {
                     scores[info.name].rmse);
         if (info.name == "none") continue;
         auto it = kMeasuredWrongPercent.find(info.name);
-        ASSERT_NE(it, kMeasuredWrongPercent.end()) << info.name << ": measure it and record its bound here";
+        if (it == kMeasuredWrongPercent.end()) {
+            ADD_FAILURE() << info.name << ": measure it and record its bound here";
+            continue;
+        }
         EXPECT_LT(100 * scores[info.name].wrongShare, it->second * 1.25) << info.name;
         EXPECT_LT(scores[info.name].wrongShare, 0.7 * scores["none"].wrongShare) << info.name << " barely shadows";
     }

@@ -7,7 +7,7 @@ namespace penumbra::shadows {
 
 using scene::Light;
 
-DepthAndTintMaps::DepthAndTintMaps() {
+DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
     depthProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
                                         .fragment = "shaders/passes/shadow_depth.frag"});
     tintProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
@@ -43,7 +43,13 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.resolution = res;
     m.cube = cube;
     m.depth = cube ? gl::Texture::createCube(GL_DEPTH_COMPONENT32F, res) : gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
-    m.tint = cube ? gl::Texture::createCube(GL_RGBA16F, res) : gl::Texture::create2D(GL_RGBA16F, res, res);
+    // Without tint a 1-texel white map keeps the lookups' "no tint" answer and costs nothing.
+    const int tintRes = withTint_ ? res : 1;
+    m.tint = cube ? gl::Texture::createCube(GL_RGBA16F, tintRes) : gl::Texture::create2D(GL_RGBA16F, tintRes, tintRes);
+    if (!withTint_) {
+        const float white[4] = {1, 1, 1, 1};
+        glClearTexImage(m.tint.id(), 0, GL_RGBA, GL_FLOAT, white);
+    }
     m.depth.setDepthCompare(true);
     for (gl::Texture* t : {&m.depth, &m.tint}) t->setFilter(filter_, filter_);
     for (int f = 0; f < (cube ? 6 : 1); ++f) {
@@ -52,12 +58,14 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
             if (cube) fb->attachLayer(GL_DEPTH_ATTACHMENT, m.depth, f);
             else fb->attach(GL_DEPTH_ATTACHMENT, m.depth);
         }
-        if (cube) withTint.attachLayer(GL_COLOR_ATTACHMENT0, m.tint, f);
-        else withTint.attach(GL_COLOR_ATTACHMENT0, m.tint);
+        if (withTint_) {
+            if (cube) withTint.attachLayer(GL_COLOR_ATTACHMENT0, m.tint, f);
+            else withTint.attach(GL_COLOR_ATTACHMENT0, m.tint);
+            withTint.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+            withTint.checkComplete("shadow tint map " + std::to_string(res));
+        }
         depthOnly.setNoColor();
-        withTint.setDrawBuffers({GL_COLOR_ATTACHMENT0});
         depthOnly.checkComplete("shadow depth map " + std::to_string(res));
-        withTint.checkComplete("shadow tint map " + std::to_string(res));
         m.depthFaces.push_back(std::move(depthOnly));
         m.tintFaces.push_back(std::move(withTint));
     }
@@ -105,6 +113,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
             frame.drawCasters(depthProgram_, Casters::Opaque);
             glDisable(GL_POLYGON_OFFSET_FILL);
 
+            if (!withTint_) continue;
             // 2. Translucent casters in front of the opaque depth: multiply transmittance
             //    into rgb, keep the nearest translucent depth in alpha.
             m.tintFaces[face].bind();

@@ -24,7 +24,8 @@ public:
         std::vector<gl::Framebuffer> depthFaces, tintFaces;
     };
 
-    DepthAndTintMaps();
+    // `withTint` false: opaque depth only (techniques that handle translucency themselves).
+    explicit DepthAndTintMaps(bool withTint = true);
     void render(const ShadowFrame& frame);
     // Binds each light's maps to the units of its slot (see shaders/common/bindings.glsl); with
     // `rawDepth` the depth map is also bound, without comparison, to the raw units.
@@ -48,6 +49,7 @@ private:
     gl::Program depthProgram_, tintProgram_;
     gl::Object<gl::detail::deleteSampler> rawSampler_;  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
+    bool withTint_ = true;
 };
 
 }  // namespace penumbra::shadows

@@ -18,7 +18,7 @@ layout(binding = UNIT_JITTER) uniform sampler3D uJitter;  // rg, ba: two unit-di
 
 float tap(ShadowSite s, vec2 offsetTexels) {
     // Receiver-plane bias, clamped so that a grazing receiver cannot push taps to infinity.
-    float planeOffset = uReceiverPlane != 0 ? clamp(dot(s.depthSlope, offsetTexels), -0.01, 0.01) : 0.0;
+    float planeOffset = uReceiverPlane != 0 ? tapReceiverDepth(s, offsetTexels) - s.depth : 0.0;
     return compareAt(s, offsetTexels, planeOffset);
 }
 
