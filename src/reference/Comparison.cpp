@@ -4,6 +4,7 @@
 #include "util/Error.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace penumbra::reference {
 
@@ -77,11 +78,21 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
     score.memoryBytes = renderer.shadowMemoryBytes();
 
     VisibilityError error;
+    double noiseSquared = 0;
+    std::size_t noisePixels = 0;
     for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
         score.visibility.push_back(capture(renderer, OutputMode::Visibility, static_cast<int>(l)));
         error.add(score.visibility.back(), reference_[l], lit_[l]);
         accumulateMaxError(score.maxError, score.visibility.back(), reference_[l], lit_[l]);
+        const std::vector<glm::vec3> again = capture(renderer, OutputMode::Visibility, static_cast<int>(l));
+        for (std::size_t i = 0; i < again.size(); ++i) {
+            if (!lit_[l][i]) continue;
+            const glm::vec3 d = again[i] - score.visibility.back()[i];
+            noiseSquared += glm::dot(d, d) / 3.0;
+            ++noisePixels;
+        }
     }
+    score.noise = noisePixels ? std::sqrt(noiseSquared / static_cast<double>(noisePixels) / 2.0) : 0.0;
     score.rmse = error.rmse();
     score.wrongShare = error.wrongShare();
     score.colourError = error.colourError();

@@ -16,6 +16,9 @@ struct TechniqueScore {
     std::string name;
     int shadowResolution = 0;  // 0: per light
     double rmse = 0, wrongShare = 0, colourError = 0;
+    // Per-pixel standard deviation of the visibility from frame to frame (stochastic techniques;
+    // 0 for deterministic ones): sqrt(mean((v1 - v2)^2) / 2) over two frames with different seeds.
+    double noise = 0;
     std::size_t pixels = 0, colouredPixels = 0;
     double shadowMs = 0, totalMs = 0;  // mean GPU ms of full shaded frames
     std::size_t memoryBytes = 0;

@@ -88,8 +88,8 @@ int runCompare(const ReportJob& job) {
 
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
-    std::printf("\n%-14s %9s %9s %11s %12s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
-                "colour px", "shadow ms", "frame ms", "MiB");
+    std::printf("\n%-14s %9s %9s %11s %9s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
+                "noise", "shadow ms", "frame ms", "MiB");
     for (const auto& name : job.techniques) {
         const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames, job.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
@@ -97,10 +97,10 @@ int runCompare(const ReportJob& job) {
         render::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
         render::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
-        std::printf("%-14s %9.4f %9.3f %11.4f %12zu %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
-                    sc.colourError, sc.colouredPixels, sc.shadowMs, sc.totalMs, mib);
+        std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
+                    sc.colourError, sc.noise, sc.shadowMs, sc.totalMs, mib);
         rows.push_back({{"technique", name}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
-                        {"colour_error", sc.colourError}, {"compared_pixels", sc.pixels},
+                        {"colour_error", sc.colourError}, {"noise", sc.noise}, {"compared_pixels", sc.pixels},
                         {"coloured_pixels", sc.colouredPixels}, {"shadow_ms", sc.shadowMs}, {"frame_ms", sc.totalMs},
                         {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"}});
     }

@@ -125,6 +125,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     }
     lighting.set("uFilter", std::clamp(static_cast<int>(std::lround(filter_)), 0, 4));
     lighting.set("uRadiusTexels", radiusTexels_);
+    lighting.set("uStorageEpsilon", fp16_ > 0.5f ? 1.0f / 1024.0f : 0.0f);
     glProgramUniform2fv(lighting.id(), lighting.location("uPoisson[0]"), static_cast<GLsizei>(poisson_.size()), &poisson_[0].x);
 }
 

@@ -6,6 +6,7 @@
 #include "shaders/common/shadow_filtering.glsl"
 
 uniform int uFilter;
+uniform float uStorageEpsilon;  // relative precision of the stored depth (RGBA16F: 2^-10), 0 for fp32
 uniform float uRadiusTexels;  // <= 0: automatic, so that the taps land on distinct texels
 uniform vec2 uPoisson[32];
 
@@ -19,7 +20,9 @@ int gLight;
 vec3 passes(ShadowSite s, vec2 texels, float ignored) {
     vec3 stored = s.cube ? shadowRawLodCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y).rgb
                          : shadowRawLod2D(s.slot, s.coord.xy + texels / s.resolution).rgb;
-    return vec3(greaterThan(stored, vec3(linearShadowDepth(gLight, tapReceiverDepth(s, texels)))));
+    float receiver = linearShadowDepth(gLight, tapReceiverDepth(s, texels));
+    // Half floats round the stored depth by up to an ulp: a receiver must not shadow itself by that.
+    return vec3(greaterThan(stored, vec3(receiver * (1.0 - uStorageEpsilon))));
 }
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
