@@ -20,8 +20,21 @@ uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world
                                // 4 unshadowed light from uDebugLight, 5 ambient term
 uniform int uDebugLight;
 
+// Translucent output, chosen by the renderer's transparency mode (SPEC §4 end):
+//   default: dual-source blending dst * transmit + src (painter's order)
+//   TRANSLUCENT_WEIGHTED: weighted blended OIT (McGuire & Bavoil 2013), two targets
+//   TRANSLUCENT_PEEL: depth peeling (Everitt 2001), one layer per pass, two targets
+#if defined(TRANSLUCENT_WEIGHTED) || defined(TRANSLUCENT_PEEL)
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outTransmit;
+#else
 layout(location = 0, index = 0) out vec4 outColor;
 layout(location = 0, index = 1) out vec4 outTransmit;
+#endif
+#ifdef TRANSLUCENT_PEEL
+layout(binding = 30) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
+layout(binding = 31) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
+#endif
 
 // Constant indices only: llvmpipe (LLVM 15) crashes on dynamically indexed sampler arrays
 // once a cube sampler is in the same shader (see shaders/common/shadow_samplers.glsl).
@@ -55,6 +68,11 @@ vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
 }
 
 void main() {
+#ifdef TRANSLUCENT_PEEL
+    // Keep only the nearest surface behind the previous layer (strictly), in front of the opaque.
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    if (gl_FragCoord.z <= texelFetch(uPeelDepth, p, 0).r || gl_FragCoord.z >= texelFetch(uOpaqueDepth, p, 0).r) discard;
+#endif
     vec4 texel = materialTexel(vIn.uv);
     float coverage = materialCoverage(texel);
     vec3 albedo = uDiffuse * texel.rgb;
@@ -96,4 +114,11 @@ void main() {
     vec3 stopped = materialStopped(coverage);
     outColor = vec4((ambient + diffuse) * stopped + specular * coverage, 1.0);
     outTransmit = vec4(vec3(1.0) - stopped, 1.0);
+#ifdef TRANSLUCENT_WEIGHTED
+    // Eq. 7 of McGuire & Bavoil: depth-weighted sums of premultiplied colour and of coverage;
+    // the transmittance itself is multiplied exactly (per channel) by blending into outTransmit.
+    float a = max(dot(stopped, vec3(1.0 / 3.0)), 1e-3);
+    float w = clamp(a * max(1e-2, 3e3 * pow(1.0 - gl_FragCoord.z, 3.0)), 1e-2, 3e3);
+    outColor = vec4(outColor.rgb * w, a * w);
+#endif
 }

@@ -78,6 +78,11 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     res = std::clamp(res, 0, 8192);
     for (const auto& p : renderer.technique().parameters()) ImGui::SliderFloat(p.name.c_str(), p.value, p.min, p.max);
 
+    int transparency = static_cast<int>(renderer.options().transparency);
+    if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0weighted\0"))
+        renderer.options().transparency = static_cast<render::TransparencyMode>(transparency);
+    if (renderer.options().transparency == render::TransparencyMode::DepthPeeling)
+        ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
     ImGui::Checkbox("animate (space)", &state.animate);
     ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
     ImGui::Checkbox("debug maps overlay (o)", &renderer.options().debugOverlay);
@@ -132,6 +137,7 @@ int runViewer(const ViewerOptions& opts) {
     ro.technique = !opts.technique.empty() ? opts.technique : (!scene.technique.empty() ? scene.technique : "hard");
     ro.shadowResolution = opts.shadowResolution;
     ro.parameters = opts.parameters;
+    ro.transparency = render::transparencyFromString(opts.transparency);
     render::Renderer renderer(scene, ro);
     scene::CameraController controller(scene.camera);
     if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);

@@ -16,6 +16,7 @@ struct ViewerOptions {
     int exitAfterFrames = 0;  // > 0: quit after that many frames (scripted runs, screenshots)
     std::filesystem::path screenshotDir = ".";
     std::vector<std::pair<std::string, float>> parameters;
+    std::string transparency = "sorted-objects";
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

@@ -28,6 +28,8 @@ BatchResult renderBatch(const BatchJob& job) {
     options.debugOverlay = job.overlay;
     options.parameters = job.parameters;
     options.strictParameters = true;
+    options.transparency = transparencyFromString(job.transparency);
+    options.peelLayers = job.peelLayers;
     Renderer renderer(scene, options);
     OffscreenTarget target(job.width, job.height);
 
@@ -72,6 +74,7 @@ BatchResult renderBatch(const BatchJob& job) {
         {"egl_platform", context->platformName()},
         {"scene", job.scene.string()},
         {"technique", renderer.technique().name()},
+        {"transparency", job.transparency},
         {"parameters", [&] {
              nlohmann::json p = nlohmann::json::object();
              for (const auto& param : renderer.technique().parameters()) p[param.name] = *param.value;

@@ -21,6 +21,8 @@ struct BatchJob {
     std::filesystem::path outDir = "out";
     std::string eglPlatform = "auto";
     std::vector<std::pair<std::string, float>> parameters;  // technique parameters
+    std::string transparency = "sorted-objects";
+    int peelLayers = 4;
 };
 
 struct BatchResult {

@@ -56,7 +56,37 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
     return out;
 }
 
+void GpuScene::drawTrianglesSorted(const Draw& d, const gl::Program& program, const glm::vec3& eye) const {
+    const scene::Mesh& mesh = scene_.meshes[d.mesh];
+    const scene::MeshPart& part = mesh.parts[d.part];
+    const std::uint32_t count = part.indexCount / 3;
+    std::vector<std::pair<float, std::uint32_t>> order(count);
+    for (std::uint32_t t = 0; t < count; ++t) {
+        const std::uint32_t* tri = &mesh.indices[part.firstIndex + 3 * t];
+        const glm::vec3 c = (mesh.vertices[tri[0]].position + mesh.vertices[tri[1]].position + mesh.vertices[tri[2]].position) / 3.0f;
+        order[t] = {-glm::length(glm::vec3(d.model * glm::vec4(c, 1.0f)) - eye), t};  // farthest first
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<std::uint32_t> indices;
+    indices.reserve(part.indexCount);
+    for (const auto& [depth, t] : order)
+        for (int k = 0; k < 3; ++k) indices.push_back(mesh.indices[part.firstIndex + 3 * t + k]);
+    const std::size_t bytes = indices.size() * sizeof(std::uint32_t);
+    if (sortedIndices_.size() < bytes) sortedIndices_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    sortedIndices_.update(0, bytes, indices.data());
+    const GpuMesh& g = meshes_[d.mesh];
+    glVertexArrayElementBuffer(g.vao.id(), sortedIndices_.id());
+    Draw whole = d;
+    draw(whole, program, 0, static_cast<GLsizei>(indices.size()));
+    glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
+}
+
 void GpuScene::draw(const Draw& d, const gl::Program& program) const {
+    const scene::MeshPart& part = scene_.meshes[d.mesh].parts[d.part];
+    draw(d, program, part.firstIndex, static_cast<GLsizei>(part.indexCount));
+}
+
+void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const {
     const scene::Material& m = *d.material;
     program.set("uModel", d.model);
     program.set("uDiffuse", m.diffuse);
@@ -67,12 +97,10 @@ void GpuScene::draw(const Draw& d, const gl::Program& program) const {
     program.set("uAlphaCutoff", m.alphaCutoff);
     program.set("uHasTexture", m.diffuseTexture >= 0 ? 1 : 0);
     if (m.diffuseTexture >= 0) images_[static_cast<std::size_t>(m.diffuseTexture)].bind(kUnitDiffuse);
-    const GpuMesh& g = meshes_[d.mesh];
-    const scene::MeshPart& part = scene_.meshes[d.mesh].parts[d.part];
     program.use();
-    g.vao.bind();
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(part.indexCount), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * sizeof(std::uint32_t)));
+    meshes_[d.mesh].vao.bind();
+    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(firstIndex) * sizeof(std::uint32_t)));
 }
 
 }  // namespace penumbra::render

@@ -30,9 +30,12 @@ public:
     std::vector<Draw> draws(float time, const glm::vec3& eye) const;
     // Sets uModel and material uniforms on `program`, binds the texture, issues the draw.
     void draw(const Draw& d, const gl::Program& program) const;
+    // The same, with the part's triangles sorted back to front from `eye` (painter's by triangle).
+    void drawTrianglesSorted(const Draw& d, const gl::Program& program, const glm::vec3& eye) const;
     const gl::Texture& image(int index) const { return images_[static_cast<std::size_t>(index)]; }
 
 private:
+    void draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const;
     struct GpuMesh {
         gl::Buffer vertices, indices;
         gl::VertexArray vao;
@@ -40,6 +43,7 @@ private:
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;
     std::vector<gl::Texture> images_;
+    mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 
 // Uploads an RGBA8 image with mipmaps (sRGB when it holds colour).

@@ -49,6 +49,7 @@ void Renderer::setTechnique(const std::string& name) {
     gl::Program lighting = buildLighting(*technique);
     technique_ = std::move(technique);
     lighting_ = std::move(lighting);
+    oit_.reset();  // its lighting variants include the old technique's lookup
     options_.technique = name;
 }
 
@@ -125,7 +126,15 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         gl::DebugGroup group("translucent");
         timers_[2].begin();
         // Debug channels show the nearest opaque surface only.
-        if (shaded) drawSurfaces(draws, true, camera, aspect);
+        const TransparencyMode mode = options_.transparency;
+        if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
+            drawSurfaces(draws, true, camera, aspect);
+        } else if (shaded) {
+            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader());
+            oit_->render(mode, options_.peelLayers, gpu_, draws,
+                         [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
+                         height);
+        }
         timers_[2].end();
     }
     {
@@ -138,18 +147,22 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     times_ = {timers_[0].milliseconds(), timers_[1].milliseconds(), timers_[2].milliseconds(), timers_[3].milliseconds()};
 }
 
-void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
-    lighting_.set("uViewProj", camera.projection(aspect) * camera.view());
-    lighting_.set("uCameraPos", camera.position);
-    lighting_.set("uAmbient", scene_.ambient);
-    lighting_.set("uTranslucentPass", translucent ? 1 : 0);
-    lighting_.set("uOutputMode", static_cast<int>(options_.output));
-    lighting_.set("uDebugLight", options_.debugLight);
-    technique_->bindLookup(lighting_);
+void Renderer::prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect) {
+    program.set("uViewProj", camera.projection(aspect) * camera.view());
+    program.set("uCameraPos", camera.position);
+    program.set("uAmbient", scene_.ambient);
+    program.set("uTranslucentPass", translucent ? 1 : 0);
+    program.set("uOutputMode", static_cast<int>(options_.output));
+    program.set("uDebugLight", options_.debugLight);
+    technique_->bindLookup(program);
     int projector = 0;
     for (const auto& light : scene_.lights)
         if (light.type == scene::Light::Type::Projector && projector < kMaxProjectors)
             gpu_.image(light.image).bind(kUnitProjector + static_cast<unsigned>(projector++));
+}
+
+void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
+    prepareLighting(lighting_, translucent, camera, aspect);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -160,9 +173,14 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         glBlendFunc(GL_ONE, GL_SRC1_COLOR);
         glDepthMask(GL_FALSE);
     }
-    for (const Draw& d : draws)
-        if (d.translucent == translucent && d.visible) gpu_.draw(d, lighting_);
+    const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
+    for (const Draw& d : draws) {
+        if (d.translucent != translucent || !d.visible) continue;
+        if (byTriangle) gpu_.drawTrianglesSorted(d, lighting_, camera.position);
+        else gpu_.draw(d, lighting_);
+    }
     glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);  // dual-source factors with several draw buffers are an error
     glDepthMask(GL_TRUE);
 }
 

@@ -9,6 +9,7 @@
 #include "gl/TimerQuery.h"
 #include "gl/VertexArray.h"
 #include "render/GpuScene.h"
+#include "render/Transparency.h"
 #include "scene/Scene.h"
 #include "shadows/ShadowTechnique.h"
 
@@ -33,6 +34,8 @@ struct RenderOptions {
     // unless strictParameters is set (then they are an error naming the known ones).
     std::vector<std::pair<std::string, float>> parameters;
     bool strictParameters = false;
+    TransparencyMode transparency = TransparencyMode::SortedObjects;
+    int peelLayers = 4;  // depth peeling: layers kept
 };
 
 struct PassTimes {
@@ -67,6 +70,7 @@ public:
 private:
     void ensureTargets(int width, int height);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
+    void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
     void drawOverlay(GLuint target, int width, int height);
 
@@ -75,6 +79,7 @@ private:
     GpuScene gpu_;
     std::unique_ptr<shadows::ShadowTechnique> technique_;
     gl::Program lighting_, resolve_, overlay_;
+    std::unique_ptr<OrderIndependentTransparency> oit_;  // built on first use, per technique
     gl::Buffer lightBlock_;
     gl::VertexArray emptyVao_;
     gl::Object<gl::detail::deleteSampler> overlaySampler_;  // reads depth maps without comparison

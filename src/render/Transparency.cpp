@@ -1,0 +1,159 @@
+#include "render/Transparency.h"
+
+#include "render/Bindings.h"
+
+#include <stdexcept>
+
+namespace penumbra::render {
+
+namespace {
+constexpr unsigned kUnitPeelDepth = 30, kUnitOpaqueDepth = 31;  // as in shaders/passes/lighting.frag
+
+gl::Program lightingVariant(const std::filesystem::path& lookup, const char* define) {
+    return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
+                               .fragment = "shaders/passes/lighting.frag",
+                               .defines = {define},
+                               .includeOverrides = {{"shadow_lookup.glsl", lookup}}});
+}
+}  // namespace
+
+const char* toString(TransparencyMode mode) {
+    switch (mode) {
+        case TransparencyMode::SortedObjects: return "sorted-objects";
+        case TransparencyMode::SortedTriangles: return "sorted-triangles";
+        case TransparencyMode::DepthPeeling: return "depth-peeling";
+        case TransparencyMode::WeightedBlended: return "weighted";
+    }
+    return "?";
+}
+
+TransparencyMode transparencyFromString(const std::string& name) {
+    for (auto m : {TransparencyMode::SortedObjects, TransparencyMode::SortedTriangles, TransparencyMode::DepthPeeling,
+                   TransparencyMode::WeightedBlended})
+        if (name == toString(m)) return m;
+    throw std::invalid_argument("unknown transparency mode '" + name +
+                                "'; known: sorted-objects, sorted-triangles, depth-peeling, weighted");
+}
+
+OrderIndependentTransparency::OrderIndependentTransparency(const std::filesystem::path& lookup)
+    : weightedProgram_(lightingVariant(lookup, "TRANSLUCENT_WEIGHTED")),
+      peelProgram_(lightingVariant(lookup, "TRANSLUCENT_PEEL")),
+      resolve_(gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
+                                   .fragment = "shaders/passes/transparency_resolve.frag"})) {}
+
+void OrderIndependentTransparency::ensure(int w, int h, int layers) {
+    if (w == width_ && h == height_ && layers == layers_) return;
+    width_ = w;
+    height_ = h;
+    layers_ = layers;
+    accum_ = gl::Texture::create2D(GL_RGBA32F, w, h);
+    transmit_ = gl::Texture::create2D(GL_RGBA16F, w, h);
+    depthCopy_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
+    weightedFbo_ = gl::Framebuffer();
+    weightedFbo_.attach(GL_COLOR_ATTACHMENT0, accum_);
+    weightedFbo_.attach(GL_COLOR_ATTACHMENT1, transmit_);
+    weightedFbo_.attach(GL_DEPTH_ATTACHMENT, depthCopy_);
+    weightedFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
+    weightedFbo_.checkComplete("weighted blended OIT");
+    layerColour_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
+    layerTransmit_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
+    for (auto& d : peelDepth_) {
+        d = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
+        d.setFilter(GL_NEAREST, GL_NEAREST);
+    }
+    peelFbos_.clear();
+    for (int i = 0; i < layers; ++i) {
+        gl::Framebuffer fb;
+        fb.attachLayer(GL_COLOR_ATTACHMENT0, layerColour_, i);
+        fb.attachLayer(GL_COLOR_ATTACHMENT1, layerTransmit_, i);
+        fb.attach(GL_DEPTH_ATTACHMENT, peelDepth_[i % 2]);
+        fb.setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
+        fb.checkComplete("depth peeling layer");
+        peelFbos_.push_back(std::move(fb));
+    }
+}
+
+void OrderIndependentTransparency::render(TransparencyMode mode, int layers, const GpuScene& gpu,
+                                          const std::vector<Draw>& draws, const Prepare& prepare,
+                                          const gl::Framebuffer& hdr, const gl::Texture& opaqueDepth, int w, int h) {
+    layers = std::max(1, layers);
+    ensure(w, h, layers);
+    if (mode == TransparencyMode::WeightedBlended) {
+        weighted(gpu, draws, prepare, opaqueDepth);
+        composite(0, 0, hdr, w, h);
+    } else {
+        peel(layers, gpu, draws, prepare, opaqueDepth);
+        composite(1, layers, hdr, w, h);
+    }
+}
+
+void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
+                                            const gl::Texture& opaqueDepth) {
+    // The opaque depth, copied so that translucent fragments behind opaque ones are rejected.
+    glCopyImageSubData(opaqueDepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depthCopy_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width_,
+                       height_, 1);
+    weightedFbo_.bind();
+    const float zero[4] = {0, 0, 0, 0}, one[4] = {1, 1, 1, 1};
+    glClearNamedFramebufferfv(weightedFbo_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(weightedFbo_.id(), GL_COLOR, 1, one);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunci(0, GL_ONE, GL_ONE);          // Σ C w, Σ a w
+    glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);   // Π T, per channel
+    prepare(weightedProgram_);
+    for (const Draw& d : draws)
+        if (d.translucent && d.visible) gpu.draw(d, weightedProgram_);
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDepthMask(GL_TRUE);
+}
+
+void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const std::vector<Draw>& draws,
+                                        const Prepare& prepare, const gl::Texture& opaqueDepth) {
+    prepare(peelProgram_);
+    opaqueDepth.bind(kUnitOpaqueDepth);
+    const float black[4] = {0, 0, 0, 0}, white[4] = {1, 1, 1, 1}, nearDepth = 0.0f, farDepth = 1.0f;
+    // "Previous layer" of the first pass: depth 0, so every fragment is behind it.
+    glClearTexImage(peelDepth_[1].id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &nearDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    for (int i = 0; i < layers; ++i) {
+        const gl::Framebuffer& fb = peelFbos_[static_cast<std::size_t>(i)];
+        fb.bind();
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, black);
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 1, white);
+        glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
+        peelDepth_[(i + 1) % 2].bind(kUnitPeelDepth);  // the layer before this one
+        for (const Draw& d : draws)
+            if (d.translucent && d.visible) gpu.draw(d, peelProgram_);
+    }
+    glBindTextureUnit(kUnitPeelDepth, 0);
+    glBindTextureUnit(kUnitOpaqueDepth, 0);
+}
+
+void OrderIndependentTransparency::composite(int mode, int layers, const gl::Framebuffer& hdr, int w, int h) {
+    hdr.bind();
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+    resolve_.set("uMode", mode);
+    resolve_.set("uLayers", layers);
+    accum_.bind(0);
+    transmit_.bind(1);
+    layerColour_.bind(2);
+    layerTransmit_.bind(3);
+    resolve_.use();
+    fullscreen_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace penumbra::render
