@@ -24,7 +24,18 @@ uniform int uDebugLight;
 //   default: dual-source blending dst * transmit + src (painter's order)
 //   TRANSLUCENT_WEIGHTED: weighted blended OIT (McGuire & Bavoil 2013), two targets
 //   TRANSLUCENT_PEEL: depth peeling (Everitt 2001), one layer per pass, two targets
-#if defined(TRANSLUCENT_WEIGHTED) || defined(TRANSLUCENT_PEEL)
+//   TRANSLUCENT_STOCHASTIC_DEPTH / _ACCUM: stochastic transparency (Enderton et al. 2010)
+//   TRANSLUCENT_DUAL_PEEL: dual depth peeling (Bavoil & Myers 2008): per pass the nearest and the
+//     farthest remaining layer; (-z, z) MAX-blended finds them for the next pass
+#if defined(TRANSLUCENT_DUAL_PEEL)
+vec4 outColor, outTransmit;  // routed to the front or back layer at the end of main
+layout(location = 0) out vec4 outDualDepth;
+layout(location = 1) out vec4 outFrontColour;
+layout(location = 2) out vec4 outFrontTransmit;
+layout(location = 3) out vec4 outBackColour;
+layout(location = 4) out vec4 outBackTransmit;
+layout(binding = 28) uniform sampler2D uDualDepth;  // previous pass: (-nearest, farthest)
+#elif defined(TRANSLUCENT_WEIGHTED) || defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_STOCHASTIC_DEPTH)
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outTransmit;
 #else
@@ -33,7 +44,14 @@ layout(location = 0, index = 1) out vec4 outTransmit;
 #endif
 #ifdef TRANSLUCENT_PEEL
 layout(binding = 30) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
+#endif
+#if defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_DUAL_PEEL)
 layout(binding = 31) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
+#endif
+#if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
+#include "../common/random.glsl"
+#define STOCHASTIC_SAMPLES 4
+layout(binding = 29) uniform sampler2DMS uStochasticDepth;  // nearest stochastic surface per sample
 #endif
 
 // Constant indices only: llvmpipe (LLVM 15) crashes on dynamically indexed sampler arrays
@@ -72,6 +90,24 @@ void main() {
     // Keep only the nearest surface behind the previous layer (strictly), in front of the opaque.
     ivec2 p = ivec2(gl_FragCoord.xy);
     if (gl_FragCoord.z <= texelFetch(uPeelDepth, p, 0).r || gl_FragCoord.z >= texelFetch(uOpaqueDepth, p, 0).r) discard;
+#endif
+#if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
+    if (gl_FragCoord.z >= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
+#endif
+#ifdef TRANSLUCENT_DUAL_PEEL
+    float z = gl_FragCoord.z;
+    vec2 previous = texelFetch(uDualDepth, ivec2(gl_FragCoord.xy), 0).rg;
+    float nearest = -previous.x, farthest = previous.y;
+    if (z >= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r || z < nearest || z > farthest) discard;  // peeled
+    outFrontColour = vec4(0.0);
+    outBackColour = vec4(0.0);
+    outFrontTransmit = vec4(1.0);
+    outBackTransmit = vec4(1.0);
+    if (z > nearest && z < farthest) {  // still inside: bound the next pass's layers
+        outDualDepth = vec4(-z, z, 0.0, 0.0);
+        return;
+    }
+    outDualDepth = vec4(-1.0);  // neutral under MAX blending
 #endif
     vec4 texel = materialTexel(vIn.uv);
     float coverage = materialCoverage(texel);
@@ -114,6 +150,38 @@ void main() {
     vec3 stopped = materialStopped(coverage);
     outColor = vec4((ambient + diffuse) * stopped + specular * coverage, 1.0);
     outTransmit = vec4(vec3(1.0) - stopped, 1.0);
+#ifdef TRANSLUCENT_STOCHASTIC_DEPTH
+    // Pass 1: each sample of the pixel is covered with probability = opacity (the mean of ρ),
+    // so the multisampled depth holds, per sample, the nearest surface that happened to cover it.
+    float opacity = dot(stopped, vec3(1.0 / 3.0));
+    int mask = 0;
+    for (int i = 0; i < STOCHASTIC_SAMPLES; ++i)
+        if (fragmentRandom(uint(i)) < opacity) mask |= 1 << i;
+    if (mask == 0) discard;
+    gl_SampleMask[0] = mask;
+#endif
+#ifdef TRANSLUCENT_STOCHASTIC_ACCUM
+    // Pass 2: this surface's visibility = share of samples whose nearest stochastic surface is
+    // not in front of it; colour and opacity are summed weighted by it. The resolve applies the
+    // paper's alpha correction: sum(C a vis) / sum(a vis) * (1 - prod(1 - a)), the last factor
+    // exact (and coloured) from the multiplied transmittance.
+    float a = max(dot(stopped, vec3(1.0 / 3.0)), 1e-3);
+    float visible = 0.0;
+    for (int i = 0; i < STOCHASTIC_SAMPLES; ++i)
+        visible += texelFetch(uStochasticDepth, ivec2(gl_FragCoord.xy), i).r >= gl_FragCoord.z - 1e-6 ? 1.0 : 0.0;
+    visible /= float(STOCHASTIC_SAMPLES);
+    outColor = vec4(outColor.rgb * visible, a * visible);
+#endif
+#ifdef TRANSLUCENT_DUAL_PEEL
+    // MAX blending keeps this layer's colour over the zeros of the others, MIN its transmittance.
+    if (z == nearest) {
+        outFrontColour = outColor;
+        outFrontTransmit = outTransmit;
+    } else {
+        outBackColour = outColor;
+        outBackTransmit = outTransmit;
+    }
+#endif
 #ifdef TRANSLUCENT_WEIGHTED
     // Eq. 7 of McGuire & Bavoil: depth-weighted sums of premultiplied colour and of coverage;
     // the transmittance itself is multiplied exactly (per channel) by blending into outTransmit.

@@ -3,11 +3,15 @@
 // the painter's path: dst = dst * transmit + colour.
 //   mode 0 weighted blended: colour = (Σ C w / Σ a w) * (1 - mean(T)), transmit = Π T (exact)
 //   mode 1 depth peeling: layers front to back, colour = Σ_i C_i Π_{j<i} T_j, transmit = Π T
+//   mode 2 dual depth peeling: front layers as mode 1, back layers (farthest first) composited
+//          back to front, then seen through the front ones
 in vec2 vUv;
 layout(binding = 0) uniform sampler2D uAccum;        // weighted: Σ C w, Σ a w
 layout(binding = 1) uniform sampler2D uTransmit;     // weighted: Π T
 layout(binding = 2) uniform sampler2DArray uLayerColour;
 layout(binding = 3) uniform sampler2DArray uLayerTransmit;
+layout(binding = 4) uniform sampler2DArray uBackColour;
+layout(binding = 5) uniform sampler2DArray uBackTransmit;
 uniform int uMode;
 uniform int uLayers;
 layout(location = 0, index = 0) out vec4 outColor;
@@ -27,6 +31,16 @@ void main() {
     for (int i = 0; i < uLayers; ++i) {
         colour += T * texelFetch(uLayerColour, ivec3(p, i), 0).rgb;
         T *= texelFetch(uLayerTransmit, ivec3(p, i), 0).rgb;
+    }
+    if (uMode == 2) {
+        vec3 back = vec3(0.0), backT = vec3(1.0);
+        for (int i = 0; i < uLayers; ++i) {  // i = 0 is the farthest layer
+            vec3 t = texelFetch(uBackTransmit, ivec3(p, i), 0).rgb;
+            back = back * t + texelFetch(uBackColour, ivec3(p, i), 0).rgb;
+            backT *= t;
+        }
+        colour += T * back;
+        T *= backT;
     }
     outColor = vec4(colour, 1.0);
     outTransmit = vec4(T, 1.0);

@@ -79,9 +79,10 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     for (const auto& p : renderer.technique().parameters()) ImGui::SliderFloat(p.name.c_str(), p.value, p.min, p.max);
 
     int transparency = static_cast<int>(renderer.options().transparency);
-    if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0weighted\0"))
+    if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0dual-depth-peeling\0weighted\0stochastic\0"))
         renderer.options().transparency = static_cast<render::TransparencyMode>(transparency);
-    if (renderer.options().transparency == render::TransparencyMode::DepthPeeling)
+    if (renderer.options().transparency == render::TransparencyMode::DepthPeeling ||
+        renderer.options().transparency == render::TransparencyMode::DualDepthPeeling)
         ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
     ImGui::Checkbox("animate (space)", &state.animate);
     ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);

@@ -56,8 +56,8 @@ int main(int argc, char** argv) {
     view->add_option("--exit-after", viewOpts.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewOpts.debugContext, "debug GL context with KHR_debug messages");
     view->add_option("--param", paramTexts, "technique parameter name=value (repeatable)");
-    view->add_option("--transparency", viewOpts.transparency, "sorted-objects | sorted-triangles | depth-peeling | weighted")
-        ->check(CLI::IsMember({"sorted-objects", "sorted-triangles", "depth-peeling", "weighted"}));
+    view->add_option("--transparency", viewOpts.transparency, "sorted-objects | sorted-triangles | depth-peeling | dual-depth-peeling | weighted | stochastic")
+        ->check(CLI::IsMember({"sorted-objects", "sorted-triangles", "depth-peeling", "dual-depth-peeling", "weighted", "stochastic"}));
 
     auto* rend = cli.add_subcommand("render", "render frames headless (EGL) to PNG + stats.json");
     render::BatchJob job;
@@ -71,9 +71,9 @@ int main(int argc, char** argv) {
     rend->add_option("--out", job.outDir, "output directory (default ./out)");
     rend->add_flag("--overlay", job.overlay, "draw the light-space debug maps over the frame");
     rend->add_option("--param", paramTexts, "technique parameter name=value (repeatable)");
-    rend->add_option("--transparency", job.transparency, "sorted-objects | sorted-triangles | depth-peeling | weighted")
-        ->check(CLI::IsMember({"sorted-objects", "sorted-triangles", "depth-peeling", "weighted"}));
-    rend->add_option("--peel-layers", job.peelLayers, "layers kept by depth peeling (default 4)")->check(CLI::Range(1, 32));
+    rend->add_option("--transparency", job.transparency, "sorted-objects | sorted-triangles | depth-peeling | dual-depth-peeling | weighted | stochastic")
+        ->check(CLI::IsMember({"sorted-objects", "sorted-triangles", "depth-peeling", "dual-depth-peeling", "weighted", "stochastic"}));
+    rend->add_option("--peel-layers", job.peelLayers, "layers kept by (dual) depth peeling (default 4)")->check(CLI::Range(1, 32));
     rend->add_option("--egl-platform", job.eglPlatform, "auto | surfaceless | device")
         ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
 

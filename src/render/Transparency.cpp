@@ -7,7 +7,8 @@
 namespace penumbra::render {
 
 namespace {
-constexpr unsigned kUnitPeelDepth = 30, kUnitOpaqueDepth = 31;  // as in shaders/passes/lighting.frag
+constexpr unsigned kUnitDualDepth = 28, kUnitStochasticDepth = 29, kUnitPeelDepth = 30, kUnitOpaqueDepth = 31;  // as in lighting.frag
+constexpr int kStochasticSamples = 4;  // llvmpipe's maximum
 
 gl::Program lightingVariant(const std::filesystem::path& lookup, const char* define) {
     return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
@@ -22,14 +23,16 @@ const char* toString(TransparencyMode mode) {
         case TransparencyMode::SortedObjects: return "sorted-objects";
         case TransparencyMode::SortedTriangles: return "sorted-triangles";
         case TransparencyMode::DepthPeeling: return "depth-peeling";
+        case TransparencyMode::DualDepthPeeling: return "dual-depth-peeling";
         case TransparencyMode::WeightedBlended: return "weighted";
+        case TransparencyMode::Stochastic: return "stochastic";
     }
     return "?";
 }
 
 TransparencyMode transparencyFromString(const std::string& name) {
     for (auto m : {TransparencyMode::SortedObjects, TransparencyMode::SortedTriangles, TransparencyMode::DepthPeeling,
-                   TransparencyMode::WeightedBlended})
+                   TransparencyMode::DualDepthPeeling, TransparencyMode::WeightedBlended, TransparencyMode::Stochastic})
         if (name == toString(m)) return m;
     throw std::invalid_argument("unknown transparency mode '" + name +
                                 "'; known: sorted-objects, sorted-triangles, depth-peeling, weighted");
@@ -38,6 +41,9 @@ TransparencyMode transparencyFromString(const std::string& name) {
 OrderIndependentTransparency::OrderIndependentTransparency(const std::filesystem::path& lookup)
     : weightedProgram_(lightingVariant(lookup, "TRANSLUCENT_WEIGHTED")),
       peelProgram_(lightingVariant(lookup, "TRANSLUCENT_PEEL")),
+      dualPeelProgram_(lightingVariant(lookup, "TRANSLUCENT_DUAL_PEEL")),
+      stochasticDepthProgram_(lightingVariant(lookup, "TRANSLUCENT_STOCHASTIC_DEPTH")),
+      stochasticAccumProgram_(lightingVariant(lookup, "TRANSLUCENT_STOCHASTIC_ACCUM")),
       resolve_(gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                    .fragment = "shaders/passes/transparency_resolve.frag"})) {}
 
@@ -55,11 +61,36 @@ void OrderIndependentTransparency::ensure(int w, int h, int layers) {
     weightedFbo_.attach(GL_DEPTH_ATTACHMENT, depthCopy_);
     weightedFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
     weightedFbo_.checkComplete("weighted blended OIT");
+    stochasticDepth_ = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, w, h, kStochasticSamples);
+    stochasticFbo_ = gl::Framebuffer();
+    stochasticFbo_.attach(GL_DEPTH_ATTACHMENT, stochasticDepth_);
+    stochasticFbo_.setNoColor();
+    stochasticFbo_.checkComplete("stochastic transparency depth");
     layerColour_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
     layerTransmit_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
     for (auto& d : peelDepth_) {
         d = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
         d.setFilter(GL_NEAREST, GL_NEAREST);
+    }
+    backColour_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
+    backTransmit_ = gl::Texture::create2DArray(GL_RGBA16F, w, h, layers);
+    for (auto& d : dualDepth_) d = gl::Texture::create2D(GL_RG32F, w, h);
+    dualInitFbo_ = gl::Framebuffer();
+    dualInitFbo_.attach(GL_COLOR_ATTACHMENT0, dualDepth_[0]);
+    dualInitFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    dualInitFbo_.checkComplete("dual depth peeling bounds");
+    dualFbos_.clear();
+    for (int k = 0; k < layers; ++k) {  // at most `layers` passes are ever used
+        gl::Framebuffer fb;
+        fb.attach(GL_COLOR_ATTACHMENT0, dualDepth_[(k + 1) % 2]);
+        fb.attachLayer(GL_COLOR_ATTACHMENT1, layerColour_, k);
+        fb.attachLayer(GL_COLOR_ATTACHMENT2, layerTransmit_, k);
+        fb.attachLayer(GL_COLOR_ATTACHMENT3, backColour_, k);
+        fb.attachLayer(GL_COLOR_ATTACHMENT4, backTransmit_, k);
+        fb.setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
+                           GL_COLOR_ATTACHMENT4});
+        fb.checkComplete("dual depth peeling pass");
+        dualFbos_.push_back(std::move(fb));
     }
     peelFbos_.clear();
     for (int i = 0; i < layers; ++i) {
@@ -79,16 +110,43 @@ void OrderIndependentTransparency::render(TransparencyMode mode, int layers, con
     layers = std::max(1, layers);
     ensure(w, h, layers);
     if (mode == TransparencyMode::WeightedBlended) {
-        weighted(gpu, draws, prepare, opaqueDepth);
+        weighted(gpu, draws, prepare, opaqueDepth, weightedProgram_);
         composite(0, 0, hdr, w, h);
+    } else if (mode == TransparencyMode::Stochastic) {
+        stochasticDepth(gpu, draws, prepare, opaqueDepth);
+        stochasticDepth_.bind(kUnitStochasticDepth);
+        opaqueDepth.bind(kUnitOpaqueDepth);
+        weighted(gpu, draws, prepare, opaqueDepth, stochasticAccumProgram_);  // same targets, visibility weights
+        glBindTextureUnit(kUnitStochasticDepth, 0);
+        glBindTextureUnit(kUnitOpaqueDepth, 0);
+        composite(0, 0, hdr, w, h);
+    } else if (mode == TransparencyMode::DualDepthPeeling) {
+        const int passes = (layers + 1) / 2;
+        dualPeel(passes, gpu, draws, prepare, opaqueDepth);
+        composite(2, passes, hdr, w, h);
     } else {
         peel(layers, gpu, draws, prepare, opaqueDepth);
         composite(1, layers, hdr, w, h);
     }
 }
 
+void OrderIndependentTransparency::stochasticDepth(const GpuScene& gpu, const std::vector<Draw>& draws,
+                                                   const Prepare& prepare, const gl::Texture& opaqueDepth) {
+    stochasticFbo_.bind();
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(stochasticFbo_.id(), GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    prepare(stochasticDepthProgram_);
+    opaqueDepth.bind(kUnitOpaqueDepth);
+    for (const Draw& d : draws)
+        if (d.translucent && d.visible) gpu.draw(d, stochasticDepthProgram_);
+}
+
 void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
-                                            const gl::Texture& opaqueDepth) {
+                                            const gl::Texture& opaqueDepth, const gl::Program& program) {
     // The opaque depth, copied so that translucent fragments behind opaque ones are rejected.
     glCopyImageSubData(opaqueDepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, depthCopy_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width_,
                        height_, 1);
@@ -103,9 +161,9 @@ void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vect
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunci(0, GL_ONE, GL_ONE);          // Σ C w, Σ a w
     glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);   // Π T, per channel
-    prepare(weightedProgram_);
+    prepare(program);
     for (const Draw& d : draws)
-        if (d.translucent && d.visible) gpu.draw(d, weightedProgram_);
+        if (d.translucent && d.visible) gpu.draw(d, program);
     glDisable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);
     glDepthMask(GL_TRUE);
@@ -136,6 +194,51 @@ void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const s
     glBindTextureUnit(kUnitOpaqueDepth, 0);
 }
 
+void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, const std::vector<Draw>& draws,
+                                            const Prepare& prepare, const gl::Texture& opaqueDepth) {
+    prepare(dualPeelProgram_);
+    opaqueDepth.bind(kUnitOpaqueDepth);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    const float outside[4] = {-1, -1, 0, 0}, everything[4] = {0, 1, 0, 0}, black[4] = {0, 0, 0, 0},
+                white[4] = {1, 1, 1, 1};
+    auto drawAll = [&] {
+        for (const Draw& d : draws)
+            if (d.translucent && d.visible) gpu.draw(d, dualPeelProgram_);
+    };
+    // Initial bounds: every translucent fragment lies within (0, 1); MAX gives (-nearest, farthest).
+    glClearTexImage(dualDepth_[1].id(), 0, GL_RG, GL_FLOAT, everything);
+    dualInitFbo_.bind();
+    glClearNamedFramebufferfv(dualInitFbo_.id(), GL_COLOR, 0, outside);
+    glBlendEquation(GL_MAX);
+    dualDepth_[1].bind(kUnitDualDepth);
+    drawAll();
+    for (int k = 0; k < passes; ++k) {
+        const gl::Framebuffer& fb = dualFbos_[static_cast<std::size_t>(k)];
+        fb.bind();
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, outside);
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 1, black);
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 2, white);
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 3, black);
+        glClearNamedFramebufferfv(fb.id(), GL_COLOR, 4, white);
+        // Bounds and colours keep the largest value, transmittances the smallest: every fragment
+        // writes neutral values except into the one layer it belongs to.
+        for (GLuint b : {0u, 1u, 3u}) glBlendEquationi(b, GL_MAX);
+        for (GLuint b : {2u, 4u}) glBlendEquationi(b, GL_MIN);
+        dualDepth_[k % 2].bind(kUnitDualDepth);
+        drawAll();
+    }
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glBindTextureUnit(kUnitDualDepth, 0);
+    glBindTextureUnit(kUnitOpaqueDepth, 0);
+}
+
 void OrderIndependentTransparency::composite(int mode, int layers, const gl::Framebuffer& hdr, int w, int h) {
     hdr.bind();
     glViewport(0, 0, w, h);
@@ -148,6 +251,8 @@ void OrderIndependentTransparency::composite(int mode, int layers, const gl::Fra
     transmit_.bind(1);
     layerColour_.bind(2);
     layerTransmit_.bind(3);
+    backColour_.bind(4);
+    backTransmit_.bind(5);
     resolve_.use();
     fullscreen_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);

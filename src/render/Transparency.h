@@ -4,7 +4,10 @@
 //   sorted-objects    painter's algorithm by object centre (what seed 000 did)
 //   sorted-triangles  painter's algorithm by triangle centre within each object
 //   depth-peeling     Everitt 2001: N exact layers front to back, composited in one pass
+//   dual-depth-peeling  Bavoil & Myers 2008: the nearest and farthest layer per pass (N/2 passes)
 //   weighted          McGuire & Bavoil 2013: one pass, exact transmittance, weighted colour
+//   stochastic        Enderton et al. 2010: 4-sample stochastic depth, then visibility-weighted
+//                     colour with alpha correction (exact coloured transmittance)
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
@@ -17,7 +20,7 @@
 
 namespace penumbra::render {
 
-enum class TransparencyMode { SortedObjects, SortedTriangles, DepthPeeling, WeightedBlended };
+enum class TransparencyMode { SortedObjects, SortedTriangles, DepthPeeling, DualDepthPeeling, WeightedBlended, Stochastic };
 const char* toString(TransparencyMode mode);
 // Throws std::invalid_argument listing the names.
 TransparencyMode transparencyFromString(const std::string& name);
@@ -35,17 +38,26 @@ public:
 private:
     void ensure(int width, int height, int layers);
     void weighted(const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
-                  const gl::Texture& opaqueDepth);
+                  const gl::Texture& opaqueDepth, const gl::Program& program);
+    void stochasticDepth(const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
+                         const gl::Texture& opaqueDepth);
     void peel(int layers, const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
               const gl::Texture& opaqueDepth);
+    void dualPeel(int passes, const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
+                  const gl::Texture& opaqueDepth);
     void composite(int mode, int layers, const gl::Framebuffer& hdr, int width, int height);
 
-    gl::Program weightedProgram_, peelProgram_, resolve_;
+    gl::Program weightedProgram_, peelProgram_, dualPeelProgram_, stochasticDepthProgram_, stochasticAccumProgram_, resolve_;
     gl::VertexArray fullscreen_;
     int width_ = 0, height_ = 0, layers_ = 0;
     gl::Texture accum_, transmit_, depthCopy_, layerColour_, layerTransmit_, peelDepth_[2];
     gl::Framebuffer weightedFbo_;
+    gl::Texture stochasticDepth_;  // 4x multisampled
+    gl::Framebuffer stochasticFbo_;
     std::vector<gl::Framebuffer> peelFbos_;  // per layer: colour/transmit layer + peel depth (ping-pong)
+    gl::Texture dualDepth_[2], backColour_, backTransmit_;  // (-nearest, farthest) ping-pong; back layers
+    gl::Framebuffer dualInitFbo_;
+    std::vector<gl::Framebuffer> dualFbos_;  // per pass: next depth bounds, front and back layer
 };
 
 }  // namespace penumbra::render

@@ -50,7 +50,8 @@ float largestColourDifference(const Frame& a, const Frame& b) {
 }
 
 const TransparencyMode kModes[] = {TransparencyMode::SortedObjects, TransparencyMode::SortedTriangles,
-                                   TransparencyMode::DepthPeeling, TransparencyMode::WeightedBlended};
+                                   TransparencyMode::DepthPeeling, TransparencyMode::DualDepthPeeling,
+                                   TransparencyMode::WeightedBlended, TransparencyMode::Stochastic};
 
 TEST(Transparency, EveryModeTransmitsTheProductOfLayers) {
     const glm::vec3 expected = glm::vec3(0.1f, 0.9f, 0.1f) * glm::vec3(0.9f, 0.2f, 0.2f) * 0.875f;
@@ -63,15 +64,23 @@ TEST(Transparency, EveryModeTransmitsTheProductOfLayers) {
 
 TEST(Transparency, DepthPeelingMatchesThePainterWhereSortingIsRight) {
     const Frame painter = seeThrough(TransparencyMode::SortedObjects, true, false);
-    const Frame peeled = seeThrough(TransparencyMode::DepthPeeling, true, false);
-    EXPECT_LT(largestColourDifference(painter, peeled), 2e-3f);
-    // Weighted blended OIT approximates the reflected colour but not the transmittance.
-    const glm::vec3 a = painter.at(32, 32), b = seeThrough(TransparencyMode::WeightedBlended, true, false).at(32, 32);
-    EXPECT_LT(glm::length(a - b), 0.25f) << "weighted blending strays too far from the sorted result";
+    for (auto mode : {TransparencyMode::DepthPeeling, TransparencyMode::DualDepthPeeling})
+        EXPECT_LT(largestColourDifference(painter, seeThrough(mode, true, false)), 2e-3f) << render::toString(mode);
+    // Weighted blended and stochastic OIT approximate the reflected colour (their transmittance is
+    // exact). Measured distance from the painter at the centre: weighted 0.207, stochastic 0.416;
+    // the stochastic weights are scalar (mean opacity) over 4 samples, which coloured glass
+    // (opacity 0.63 but green transmission 0.9) defeats. Bounds: 1.2x the measurements.
+    const glm::vec3 a = painter.at(32, 32);
+    for (auto [mode, bound] : {std::pair{TransparencyMode::WeightedBlended, 0.25f}, std::pair{TransparencyMode::Stochastic, 0.5f}}) {
+        const glm::vec3 b = seeThrough(mode, true, false).at(32, 32);
+        EXPECT_LT(glm::length(a - b), bound) << render::toString(mode) << " strays too far from the sorted result";
+    }
 }
 
 TEST(Transparency, OrderIndependentModesIgnoreListOrder) {
-    for (auto mode : {TransparencyMode::DepthPeeling, TransparencyMode::WeightedBlended, TransparencyMode::SortedObjects}) {
+    for (auto mode : {TransparencyMode::DepthPeeling, TransparencyMode::DualDepthPeeling, TransparencyMode::WeightedBlended,
+                      TransparencyMode::Stochastic,
+                      TransparencyMode::SortedObjects}) {
         const Frame forward = seeThrough(mode, true, false), backward = seeThrough(mode, true, true);
         EXPECT_LT(largestColourDifference(forward, backward), 1e-3f) << render::toString(mode);
     }
