@@ -72,6 +72,13 @@ Texture Texture::create2DMultisample(GLenum fmt, int w, int h, int samples) {
                    bytesPerTexel(fmt) * static_cast<std::size_t>(w) * h * samples);
 }
 
+Texture Texture::view2D(const Texture& source, GLenum format, int layer) {
+    GLuint id = 0;
+    glGenTextures(1, &id);  // glTextureView needs a name that was never bound: glGen, not glCreate
+    glTextureView(id, GL_TEXTURE_2D, source.id(), format, 0, 1, static_cast<GLuint>(layer), 1);
+    return Texture(GL_TEXTURE_2D, id, source.width(), source.height(), 0);
+}
+
 Texture Texture::adopt(GLenum target, GLuint id, int w, int h, std::size_t bytes) { return Texture(target, id, w, h, bytes); }
 
 void Texture::setFilter(GLenum minFilter, GLenum magFilter) {

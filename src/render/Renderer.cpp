@@ -35,12 +35,6 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     lighting_ = buildLighting(*technique_);
     resolve_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/resolve.frag"});
     overlay_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/overlay.frag"});
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    overlaySampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 }
 
 void Renderer::setTechnique(const std::string& name) {
@@ -208,7 +202,7 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     overlay_.use();
     emptyVao_.bind();
-    glBindSampler(0, overlaySampler_.id());
+    overlaySampler_.bind(0);
     for (const auto& view : views) {
         if (view.target != GL_TEXTURE_2D || x + size > width) continue;
         glViewport(x, 8, size, size);
@@ -217,7 +211,7 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
         x += size + 8;
     }
-    glBindSampler(0, 0);
+    gl::Sampler::unbind(0);
     glViewport(0, 0, width, height);
 }
 

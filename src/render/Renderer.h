@@ -5,6 +5,7 @@
 #include "gl/Buffer.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/TimerQuery.h"
 #include "gl/VertexArray.h"
@@ -82,7 +83,7 @@ private:
     std::unique_ptr<OrderIndependentTransparency> oit_;  // built on first use, per technique
     gl::Buffer lightBlock_;
     gl::VertexArray emptyVao_;
-    gl::Object<gl::detail::deleteSampler> overlaySampler_;  // reads depth maps without comparison
+    gl::Sampler overlaySampler_{GL_LINEAR, GL_LINEAR};  // reads depth maps without comparison
     // Float HDR colour + depth; 32-bit so that debug channels (positions) keep their precision.
     gl::Texture hdr_, depth_;
     gl::Framebuffer hdrFbo_;

@@ -14,14 +14,6 @@ DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
                                         .fragment = "shaders/passes/shadow_depth.frag"});
     tintProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
                                        .fragment = "shaders/passes/shadow_transmit.frag"});
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    rawSampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
 std::vector<int> DepthAndTintMaps::slots(const std::vector<Light>& lights) {
@@ -148,9 +140,9 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
         maps_[i].tint.bind((cube_[i] ? render::kUnitTintCube : render::kUnitTint2D) + slot);
         if (rawDepth) {
             maps_[i].depth.bind(raw);
-            glBindSampler(raw, rawSampler_.id());
+            rawSampler_.bind(raw);
         } else {
-            glBindSampler(raw, 0);
+            gl::Sampler::unbind(raw);
         }
     }
 }

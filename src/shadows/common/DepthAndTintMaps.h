@@ -5,6 +5,7 @@
 // re-rendered every frame.
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 
@@ -47,7 +48,7 @@ private:
     std::vector<int> slots_;
     std::vector<bool> cube_;
     gl::Program depthProgram_, tintProgram_;
-    gl::Object<gl::detail::deleteSampler> rawSampler_;  // reads depth maps without comparison
+    gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;
 };

@@ -13,12 +13,6 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
     : variant_(variant), fp16_(variant == Variant::Rgb ? 1.0f : 0.0f), poisson_(poissonDisk(32)) {
     copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/cssm_copy.frag"});
     casters_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/cssm_caster.frag"});
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    depthSampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 std::vector<Parameter> ColoredStochasticShadowMap::parameters() {
@@ -26,14 +20,6 @@ std::vector<Parameter> ColoredStochasticShadowMap::parameters() {
             {"radius_texels", &radiusTexels_, 0.0f, 8.0f},  // 0: automatic (distinct texels per tap)
             {"rng", &generator_, 0, 1},  // 0 PCG hash, 1 fract(sin)
             {"fp16", &fp16_, 0, 1}};
-}
-
-// 2D view of one face (or of the whole 2D map), for reading a single layer in a full-screen pass.
-static gl::Texture faceView(const gl::Texture& source, GLenum format, int layer, int res) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    glTextureView(id, GL_TEXTURE_2D, source.id(), format, 0, 1, static_cast<GLuint>(layer), 1);
-    return gl::Texture::adopt(GL_TEXTURE_2D, id, res, res, 0);
 }
 
 void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& depth) {
@@ -49,7 +35,7 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     m.colour = m.cube ? gl::Texture::createCube(format, res) : gl::Texture::create2D(format, res, res);
     m.colour.setFilter(GL_NEAREST, GL_NEAREST);  // stochastic texels must not be averaged by the sampler
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        m.depthFaces.push_back(faceView(depth.depth, GL_DEPTH_COMPONENT32F, f, res));
+        m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
         gl::Framebuffer fb;
         if (m.cube) {
             fb.attachLayer(GL_COLOR_ATTACHMENT0, m.colour, f);
@@ -86,11 +72,11 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_BLEND);
             copy_.use();
-            glBindSampler(0, depthSampler_.id());
+            depthSampler_.bind(0);
             m.depthFaces[f].bind(0);
             fullscreenVao_.bind();
             glDrawArrays(GL_TRIANGLES, 0, 3);
-            glBindSampler(0, 0);
+            gl::Sampler::unbind(0);
             // 3. Translucent casters in front of the opaque depth, MIN-blended per channel.
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_LESS);

@@ -1,5 +1,6 @@
 #pragma once
 #include "gl/Framebuffer.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
@@ -47,7 +48,7 @@ private:
     DepthAndTintMaps depth_{/*withTint=*/false};
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_;
-    gl::Object<gl::detail::deleteSampler> depthSampler_;
+    gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;
 };
 

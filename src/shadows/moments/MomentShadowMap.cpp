@@ -16,12 +16,6 @@ MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
       bleedReduction_(warp == Warp::Variance ? 0.2f : 0.0f) {
     toMoments_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/moments.frag"});
     blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/blur.frag"});
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    depthSampler_ = gl::Object<gl::detail::deleteSampler>(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 std::vector<Parameter> MomentShadowMap::parameters() {
@@ -45,14 +39,6 @@ GLenum MomentShadowMap::format() const {
         case Warp::ExponentialVariance2: return half ? GL_RG16F : GL_RG32F;
         default: return half ? GL_RGBA16F : GL_RGBA32F;
     }
-}
-
-// 2D views let one pass read or write a single cube face (glTextureView needs glGen'd names).
-static gl::Texture view(const gl::Texture& source, GLenum format, int layer, int res) {
-    GLuint id = 0;
-    glGenTextures(1, &id);
-    glTextureView(id, GL_TEXTURE_2D, source.id(), format, 0, 1, static_cast<GLuint>(layer), 1);
-    return gl::Texture::adopt(GL_TEXTURE_2D, id, res, res, 0);
 }
 
 void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& depth) {
@@ -92,8 +78,8 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
         m.multisampledTarget.checkComplete("multisampled moment depth");
     }
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        m.depthFaces.push_back(view(depth.depth, GL_DEPTH_COMPONENT32F, f, res));
-        m.momentFaces.push_back(view(m.moments, m.format, f, res));
+        m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
+        m.momentFaces.push_back(gl::Texture::view2D(m.moments, m.format, f));
         gl::Framebuffer fb;
         if (m.cube) fb.attachLayer(GL_COLOR_ATTACHMENT0, m.moments, f);
         else fb.attach(GL_COLOR_ATTACHMENT0, m.moments);
@@ -137,10 +123,10 @@ void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
         }
         m.momentTargets[f].bind();
         toMoments_.use();
-        glBindSampler(0, depthSampler_.id());
+        depthSampler_.bind(0);
         m.depthFaces[f].bind(0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindSampler(0, 0);
+        gl::Sampler::unbind(0);
         if (radius > 0) {  // separable Gaussian: map -> scratch (x), scratch -> map (y)
             blur_.set("uRadius", radius);
             blur_.use();

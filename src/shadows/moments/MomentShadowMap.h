@@ -1,5 +1,6 @@
 #pragma once
 #include "gl/Framebuffer.h"
+#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
@@ -48,7 +49,7 @@ private:
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_;
-    gl::Object<gl::detail::deleteSampler> depthSampler_;
+    gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
 };
 
