@@ -14,3 +14,4 @@
 #define UNIT_SHADOW_CUBE 16
 #define UNIT_TINT_CUBE 18
 #define UNIT_RAW_CUBE 20
+#define UNIT_CASCADES 22      // sampler2DArrayShadow of the cascaded sun

@@ -16,6 +16,7 @@ inline constexpr unsigned kUnitRaw2D = 12;
 inline constexpr unsigned kUnitShadowCube = 16;
 inline constexpr unsigned kUnitTintCube = 18;
 inline constexpr unsigned kUnitRawCube = 20;
+inline constexpr unsigned kUnitCascades = 22;
 
 inline constexpr unsigned kLightBlockBinding = 0;
 

@@ -94,6 +94,9 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.lights = &scene_.lights;
         frame.lightSpaces = &spaces;
         frame.frameIndex = frameIndex_++;
+        frame.camera = &camera;
+        frame.aspect = aspect;
+        frame.sceneBounds = bounds;
         frame.drawCasters = [&](const gl::Program& program, shadows::Casters casters) {
             const bool wantTranslucent = casters == shadows::Casters::Translucent;
             for (const Draw& d : draws)

@@ -1,4 +1,5 @@
 #include "shadows/ShadowTechnique.h"
+#include "shadows/cascaded/CascadedShadowMap.h"
 #include "shadows/cssm/ColoredStochasticShadowMap.h"
 #include "shadows/hard/HardShadowMap.h"
 #include "shadows/moments/MomentShadowMap.h"
@@ -49,6 +50,8 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
         moments("evsm4", "exponential variance shadow maps, both warps (4 components)",
                 MomentShadowMap::Warp::ExponentialVariance4),
         moments("msm", "moment shadow maps, Hamburger 4MSM (Peters & Klein 2015)", MomentShadowMap::Warp::Moments4),
+        {"cascaded", "cascaded / parallel-split shadow maps (Zhang et al. 2006) for the sun, stabilised, blended",
+         [] { return std::make_unique<CascadedShadowMap>(); }},
         {"cssm1", "coloured stochastic shadow maps (McGuire & Enderton 2011), one map per channel",
          [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::PerChannel); }},
         {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (seed 000 ch. 5)",

@@ -5,6 +5,7 @@
 // (rgb: coloured visibility, 1 = fully lit). Adding a technique = a folder here + one line in
 // Registry.cpp.
 #include "gl/Program.h"
+#include "scene/Camera.h"
 #include "shadows/LightSpace.h"
 
 #include <cstddef>
@@ -29,6 +30,9 @@ struct ShadowFrame {
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
     std::function<void(const gl::Program& program, Casters casters)> drawCasters;
     std::uint32_t frameIndex = 0;  // seeds per-frame randomness (stochastic techniques)
+    const scene::Camera* camera = nullptr;  // view-dependent techniques (cascades) fit to it
+    float aspect = 1.0f;
+    scene::Bounds sceneBounds;              // every object at this frame's time
 };
 
 // A texture worth showing in the debug overlay.

@@ -48,3 +48,29 @@ TEST(Compare, SceneWithoutLightsSaysSo) {
 
 }  // namespace
 }  // namespace penumbra::test
+
+namespace penumbra::test {
+namespace {
+
+// A road 200 m long with posts along it, the camera low at one end: one plain map spreads its
+// texels over the whole road; cascades spend them near the camera.
+TEST(Compare, CascadesBeatOnePlainMapOfTheSameMemoryOnALongScene) {
+    std::string posts;
+    for (int i = 0; i < 20; ++i)
+        posts += R"(, { "shape": "box", "size": [0.15, 2.5, 0.15], "position": [)" + std::to_string(i % 2 ? 2.5 : -2.5) +
+                 ", 1.25, " + std::to_string(-3.0 - 9.5 * i) + "] }";
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 1.7, 0], "target": [0, 1.2, -30], "fov_deg": 60, "near": 0.1, "far": 220 },
+      "lights": [ { "type": "directional", "direction": [-0.6, -1, -0.25], "shadow": { "resolution": 1024 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 220], "position": [0, 0, -100] } )" + posts + "] }");
+    reference::Comparison cmp(s, 320, 180, 0.0f);
+    cmp.traceReference(1, false);
+    const auto plain = cmp.evaluate("hard", 2048, 0);          // 2048^2 = 4 x 1024^2
+    const auto cascades = cmp.evaluate("cascaded", 1024, 0);   // 4 cascades of 1024^2
+    std::printf("long scene wrong pixels: plain 2048^2 %.3f%%, 4 cascades of 1024^2 %.3f%%\n", 100 * plain.wrongShare,
+                100 * cascades.wrongShare);
+    EXPECT_LT(cascades.wrongShare, 0.5 * plain.wrongShare);
+}
+
+}  // namespace
+}  // namespace penumbra::test

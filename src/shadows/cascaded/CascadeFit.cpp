@@ -1,0 +1,77 @@
+#include "shadows/cascaded/CascadeFit.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace penumbra::shadows {
+
+std::vector<float> cascadeSplits(float n, float f, int m, float lambda) {
+    std::vector<float> c(static_cast<std::size_t>(m) + 1);
+    for (int i = 0; i <= m; ++i) {
+        const float t = static_cast<float>(i) / static_cast<float>(m);
+        const float logarithmic = n * std::pow(f / n, t), uniform = n + (f - n) * t;
+        c[static_cast<std::size_t>(i)] = lambda * logarithmic + (1.0f - lambda) * uniform;
+    }
+    c.front() = n;
+    c.back() = f;
+    return c;
+}
+
+static std::array<glm::vec3, 8> sliceCorners(const scene::Camera& cam, float aspect, float n, float f) {
+    const glm::mat4 inv = glm::inverse(glm::perspective(glm::radians(cam.fovDeg), aspect, n, f) * cam.view());
+    std::array<glm::vec3, 8> corners{};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 w = inv * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
+        corners[static_cast<std::size_t>(i)] = glm::vec3(w) / w.w;
+    }
+    return corners;
+}
+
+Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear, float splitFar,
+                   const scene::Bounds& sceneBounds, int res, bool stabilize) {
+    const glm::vec3 dir = light.direction;
+    const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    // A light view through the world origin: only its orientation matters; positions are
+    // expressed in it so that texel snapping is relative to a fixed grid.
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, up);
+    const auto corners = sliceCorners(camera, aspect, splitNear, splitFar);
+
+    glm::vec2 lo, hi;
+    if (stabilize) {
+        glm::vec3 centre(0.0f);
+        for (const auto& c : corners) centre += c / 8.0f;
+        float radius = 0.0f;
+        for (const auto& c : corners) radius = std::max(radius, glm::length(c - centre));
+        radius = std::ceil(radius * 16.0f) / 16.0f;  // quantised: rounding noise must not resize the box
+        const float texel = 2.0f * radius / static_cast<float>(res);
+        glm::vec2 centreLs = glm::vec2(view * glm::vec4(centre, 1.0f));
+        centreLs = glm::floor(centreLs / texel) * texel;  // whole texels: the grid never slides
+        lo = centreLs - radius;
+        hi = centreLs + radius;
+    } else {
+        lo = glm::vec2(std::numeric_limits<float>::max());
+        hi = glm::vec2(std::numeric_limits<float>::lowest());
+        for (const auto& c : corners) {
+            const glm::vec2 p = glm::vec2(view * glm::vec4(c, 1.0f));
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+    }
+    const scene::Bounds ls = sceneBounds.transformed(view);
+    const float margin = 1e-3f * std::max(glm::length(sceneBounds.extent()), 1.0f);
+    Cascade c;
+    c.splitNear = splitNear;
+    c.splitFar = splitFar;
+    c.depthNear = -ls.max.z - margin;
+    c.depthFar = -ls.min.z + margin;
+    c.viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, c.depthNear, c.depthFar) * view;
+    c.shadowMatrix = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)) *
+                     c.viewProj;
+    c.texelWorld = std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(res);
+    return c;
+}
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,40 @@
+#pragma once
+#include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+#include "shadows/ShadowTechnique.h"
+#include "shadows/cascaded/CascadeFit.h"
+#include "shadows/common/DepthAndTintMaps.h"
+
+namespace penumbra::shadows {
+
+// Cascaded shadow maps for the first shadowed directional light: 1-8 splits placed by λ, all
+// rendered in one layered pass into a depth array, stabilised against shimmer, blended across
+// borders, tinted per cascade on request, freezable to inspect from elsewhere. Other lights and
+// the coloured tint use the shared per-light maps.
+class CascadedShadowMap final : public ShadowTechnique {
+public:
+    CascadedShadowMap();
+    std::string name() const override { return "cascaded"; }
+    std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
+    void renderMaps(const ShadowFrame& frame) override;
+    void bindLookup(const gl::Program& lighting) const override;
+    std::size_t memoryBytes() const override { return maps_.memoryBytes() + cascades_.memoryBytes(); }
+    std::vector<DebugView> debugViews() const override;
+    std::vector<Parameter> parameters() override;
+    const std::vector<Cascade>& cascades() const { return fitted_; }
+
+private:
+    float count_ = 4, lambda_ = 0.75f, stabilize_ = 1, blend_ = 0.1f, select_ = 0, debugTint_ = 0, freeze_ = 0,
+          maxDistance_ = 0;
+    int light_ = -1;
+    glm::mat4 cameraView_{1.0f};
+    std::vector<float> splits_;
+    std::vector<Cascade> fitted_;
+    gl::Texture cascades_;
+    gl::Framebuffer target_;
+    int resolution_ = 0, layers_ = 0;
+    gl::Program casters_;
+    DepthAndTintMaps maps_;
+};
+
+}  // namespace penumbra::shadows

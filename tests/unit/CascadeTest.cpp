@@ -1,0 +1,77 @@
+// Cascaded shadow maps, the geometry: split placement, texel density on a long scene, and the
+// stabilisation that keeps shadows from shimmering.
+#include "shadows/LightSpace.h"
+#include "shadows/cascaded/CascadeFit.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace penumbra::shadows {
+namespace {
+
+TEST(Cascades, SplitsFollowTheLogUniformBlend) {
+    const auto uniform = cascadeSplits(1.0f, 101.0f, 4, 0.0f);
+    EXPECT_FLOAT_EQ(uniform[1], 26.0f);
+    EXPECT_FLOAT_EQ(uniform[2], 51.0f);
+    const auto logarithmic = cascadeSplits(1.0f, 10000.0f, 4, 1.0f);
+    EXPECT_NEAR(logarithmic[1], 10.0f, 1e-3f);
+    EXPECT_NEAR(logarithmic[3], 1000.0f, 1e-1f);
+    const auto half = cascadeSplits(1.0f, 10000.0f, 4, 0.5f);
+    EXPECT_NEAR(half[1], 0.5f * 10.0f + 0.5f * (1.0f + 9999.0f / 4.0f), 1e-2f);
+    EXPECT_EQ(half.front(), 1.0f);
+    EXPECT_EQ(half.back(), 10000.0f);
+}
+
+struct LongScene {
+    scene::Light sun;
+    scene::Camera camera;
+    scene::Bounds bounds;
+    LongScene() {
+        sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+        camera.position = {0.0f, 2.0f, 0.0f};
+        camera.target = {0.0f, 1.5f, -100.0f};
+        camera.fovDeg = 60.0f;
+        camera.near = 0.1f;
+        camera.far = 1000.0f;
+        bounds.add(glm::vec3(-10.0f, 0.0f, -1000.0f));  // a ground 20 m wide, 1 km deep, posts 3 m tall
+        bounds.add(glm::vec3(10.0f, 3.0f, 0.0f));
+    }
+};
+
+TEST(Cascades, NearTexelsAreFarDenserThanOnePlainMapOfTheSameMemory) {
+    const LongScene s;
+    const int res = 2048, count = 4;
+    const auto splits = cascadeSplits(s.camera.near, s.camera.far, count, 0.75f);
+    const Cascade nearest = fitCascade(s.sun, s.camera, 16.0f / 9.0f, splits[0], splits[1], s.bounds, res, true);
+    // Same memory: one map with count * res^2 texels.
+    const int plainRes = static_cast<int>(std::lround(res * std::sqrt(static_cast<double>(count))));
+    const LightSpace plain = computeLightSpace(s.sun, plainRes, s.bounds, s.camera, 16.0f / 9.0f);
+    const double linear = plain.texelScale / nearest.texelWorld;
+    std::printf("texel world size near the camera: plain %.4f m, first cascade %.4f m: %.1fx per axis, %.0fx per area\n",
+                plain.texelScale, nearest.texelWorld, linear, linear * linear);
+    EXPECT_GE(linear * linear, 4.0) << "texels per screen pixel (an area) near the camera";
+}
+
+TEST(Cascades, StabilisationIgnoresSubTexelCameraMotion) {
+    LongScene s;
+    const auto splits = cascadeSplits(s.camera.near, 200.0f, 4, 0.75f);
+    const Cascade before = fitCascade(s.sun, s.camera, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
+    // Move the camera sideways by 0.3 of a texel of this cascade.
+    scene::Camera moved = s.camera;
+    const glm::vec3 step(0.3f * before.texelWorld, 0.0f, 0.0f);
+    moved.position += step;
+    moved.target += step;
+    const Cascade after = fitCascade(s.sun, moved, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
+    EXPECT_EQ(before.viewProj, after.viewProj) << "shimmer: the stabilised box moved";
+    const Cascade looseBefore = fitCascade(s.sun, s.camera, 1.5f, splits[1], splits[2], s.bounds, 1024, false);
+    const Cascade looseAfter = fitCascade(s.sun, moved, 1.5f, splits[1], splits[2], s.bounds, 1024, false);
+    EXPECT_NE(looseBefore.viewProj, looseAfter.viewProj) << "without stabilisation the box follows the camera";
+    // Turning the camera keeps the box size (the slice's bounding sphere) exactly.
+    scene::Camera turned = s.camera;
+    turned.target = s.camera.position + glm::vec3(10.0f, -0.5f, -100.0f);
+    const Cascade rotated = fitCascade(s.sun, turned, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
+    EXPECT_FLOAT_EQ(rotated.texelWorld, before.texelWorld);
+}
+
+}  // namespace
+}  // namespace penumbra::shadows
