@@ -30,6 +30,18 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     if (scene_.lights.size() > static_cast<std::size_t>(kMaxLights))
         throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
                                     std::to_string(kMaxLights) + " are supported");
+    int projectors = 0, shadowed2D = 0, shadowedCube = 0;
+    for (const auto& l : scene_.lights) {
+        projectors += l.type == scene::Light::Type::Projector;
+        if (l.shadow.enabled) (l.type == scene::Light::Type::Point ? shadowedCube : shadowed2D) += 1;
+    }
+    if (projectors > kMaxProjectors)
+        throw std::invalid_argument("the scene has " + std::to_string(projectors) + " projectors; at most " +
+                                    std::to_string(kMaxProjectors) + " are supported");
+    if (shadowed2D > kMaxShadow2D || shadowedCube > kMaxShadowCube)
+        log::warn("{}: {} directional/spot/projector and {} point lights cast shadows; only the first {} and {} will "
+                  "(set \"shadow\": {\"enabled\": false} on the others to silence this)",
+                  scene_.source.string(), shadowed2D, shadowedCube, kMaxShadow2D, kMaxShadowCube);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
     lighting_ = buildLighting(*technique_);

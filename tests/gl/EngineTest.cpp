@@ -177,6 +177,28 @@ TEST(BadInput, UnknownTechniqueListsTheKnownOnes) {
     EXPECT_EQ(renderer.technique().name(), "hard") << "the previous technique stays active";
 }
 
+TEST(BadInput, TooManyProjectorsOrShadowedLightsAreReported) {
+    std::string projectors;
+    for (int i = 0; i < 3; ++i)
+        projectors += std::string(i ? ", " : "") +
+                      R"({ "type": "projector", "position": [0, 3, 0], "direction": [0, -1, 0], "image": "quadrants.png" })";
+    scene::Scene three = sceneFromJson(R"({ "lights": [ )" + projectors + R"( ], "objects": [ { "shape": "box" } ] })");
+    try {
+        render::Renderer renderer(three);
+        FAIL() << "three projectors were accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("at most 2"), std::string::npos) << e.what();
+    }
+    std::string suns;
+    for (int i = 0; i < 5; ++i) suns += std::string(i ? ", " : "") + R"({ "type": "directional", "direction": [0, -1, 0] })";
+    scene::Scene five = sceneFromJson(R"({ "lights": [ )" + suns + R"( ], "objects": [ { "shape": "box" } ] })");
+    log::takeWarnings();
+    render::Renderer renderer(five);
+    const auto warnings = log::takeWarnings();
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("only the first 4"), std::string::npos) << warnings[0];
+}
+
 // Every technique with every light type (several at once) renders without GL errors.
 TEST(DebugOutput, EveryTechniqueAndLightTypeIsClean) {
     scene::Scene s = sceneFromJson(R"({
