@@ -22,7 +22,8 @@ struct RegionStats {
 // the visibility over the central 24x24 pixels, all well inside every pane's footprint.
 RegionStats underPanes(const std::vector<std::string>& materials, const std::string& technique,
                        const std::vector<std::pair<std::string, float>>& parameters = {}, bool reversed = false,
-                       Frame* whole = nullptr) {
+                       Frame* whole = nullptr,
+                       const std::string& light = R"({ "type": "directional", "direction": [0, -1, 0], "shadow": { "resolution": 1024 } })") {
     std::vector<std::string> objects{R"({ "shape": "plane", "size": [20, 20] })"};
     float y = 2.0f;
     for (const auto& m : materials) {
@@ -35,7 +36,7 @@ RegionStats underPanes(const std::vector<std::string>& materials, const std::str
     for (const auto& o : objects) list += (list.empty() ? "" : ", ") + o;
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
-      "lights": [ { "type": "directional", "direction": [0, -1, 0], "shadow": { "resolution": 1024 } } ],
+      "lights": [ )" + light + R"( ],
       "objects": [ )" + list + "] }");
     render::RenderOptions options;
     options.technique = technique;
@@ -84,6 +85,19 @@ TEST_P(Stochastic, ReceivedLightUnderPanesMatchesTransmission) {
     expectNear(underPanes({kGlass, kGlass}, t).mean, {0.01f, 0.81f, 0.01f}, t + " two green panes");
     expectNear(underPanes({kNylon}, t).mean, glm::vec3(0.875f), t + " translucent nylon");
     expectNear(underPanes({kBlackNylon}, t).mean, glm::vec3(0.75f), t + " black nylon");
+}
+
+TEST_P(Stochastic, PointAndSpotLightsTransmitTheSame) {
+    // Cube maps (point) and perspective maps (spot) through the same panes, light high above.
+    const std::string t = GetParam();
+    const std::string point = R"({ "type": "point", "position": [0, 30, 0], "range": 60, "shadow": { "resolution": 1024 } })";
+    const std::string spot = R"({ "type": "spot", "position": [0, 30, 0], "direction": [0, -1, 0], "angle_deg": 40,
+                                  "range": 60, "shadow": { "resolution": 1024 } })";
+    for (const auto& [name, light] : {std::pair{"point", point}, std::pair{"spot", spot}}) {
+        expectNear(underPanes({kGlass}, t, {}, false, nullptr, light).mean, {0.1f, 0.9f, 0.1f}, t + " " + name + " green glass");
+        expectNear(underPanes({kGlass, kGlass}, t, {}, false, nullptr, light).mean, {0.01f, 0.81f, 0.01f},
+                   t + " " + name + " two panes");
+    }
 }
 
 TEST_P(Stochastic, NoiseFallsAsTapsGrow) {

@@ -27,8 +27,10 @@ vec3 passes(ShadowSite s, vec2 texels, float ignored) {
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
-    // ∂s/∂x, ∂s/∂y in texels, taken before any branch.
-    vec2 sTexels = s.coord.xy * s.resolution;
+    // s in texels, and ∂s/∂x, ∂s/∂y, taken before any branch. Cube maps: coordinates along the
+    // face's texel steps (tangent, bitangent), not the direction's x, y (constant on some faces).
+    vec2 sTexels = s.cube ? vec2(dot(s.coord, s.tangent), dot(s.coord, s.bitangent)) / dot(s.tangent, s.tangent)
+                          : s.coord.xy * s.resolution;
     vec2 dsdx = dFdx(sTexels), dsdy = dFdy(sTexels);
     if (!s.inside) return vec3(1.0);
     gLight = light;
@@ -56,7 +58,9 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
         }
     } else {
         n = 13;
-        vec2 norms = max(vec2(abs(dsdx.x) + abs(dsdx.y), abs(dsdy.x) + abs(dsdy.y)), vec2(1e-4));
+        // Norms below 1/6 texel per pixel (strong magnification) would push δ past a texel: the
+        // jitter is meant to be a micro-offset, so it is bounded to one texel.
+        vec2 norms = max(vec2(abs(dsdx.x) + abs(dsdx.y), abs(dsdy.x) + abs(dsdy.y)), vec2(1.0 / 6.0));
         vec2 delta = (mod(5.0 * sTexels, vec2(2.0)) - vec2(1.0)) / (6.0 * norms);
         for (int i = 0; i < 13; ++i) sum += passes(s, kCross13[i] + delta, receiver);
     }
