@@ -2,8 +2,10 @@
 // with taps addressed in shadow-map texels for 2D maps and cube maps alike.
 #include "shadow_coord.glsl"
 #include "shadow_samplers.glsl"
+#include "depth.glsl"
 
 struct ShadowSite {
+    int light;
     int slot;
     bool cube;
     bool inside;
@@ -24,6 +26,7 @@ struct ShadowSite {
 ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     LightData L = uLights[light];
     ShadowSite s;
+    s.light = light;
     s.slot = int(L.cone.w);
     s.cube = lightType(light) == LIGHT_POINT;
     ShadowCoord sc = shadowCoord(L, P, N, NdotL);
@@ -91,9 +94,7 @@ vec3 tintAt(ShadowSite s) {
 float linearShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
     if (L.misc.x < 0.5) return windowDepth;
-    float n = L.positionNear.w, f = L.directionFar.w;
-    float d = n * f / (f - windowDepth * (f - n));
-    return (d - n) / (f - n);
+    return perspectiveLinearDepth(windowDepth, L.positionNear.w, L.directionFar.w);
 }
 
 // World distance along the light's axis, from window depth.
@@ -101,7 +102,7 @@ float worldShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
     float n = L.positionNear.w, f = L.directionFar.w;
     if (L.misc.x < 0.5) return n + windowDepth * (f - n);
-    return n * f / (f - windowDepth * (f - n));
+    return perspectiveViewDepth(windowDepth, n, f);
 }
 
 // Interleaved gradient noise (Jimenez 2014): a cheap per-pixel value with no visible pattern.

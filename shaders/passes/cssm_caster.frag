@@ -8,17 +8,14 @@
 //   CSSM1: one pass per channel (uChannel), independent ξ per channel; opaque casters too.
 #include "../common/material.glsl"
 #include "../common/random.glsl"
+#include "../common/depth.glsl"
 in vec2 vUv;
 uniform int uPerspective;
 uniform float uNear, uFar;
 uniform int uChannel;  // -1: all channels (CSSM2), else 0..2 (CSSM1)
 layout(location = 0) out vec4 outDepth;
 
-float linearDepth(float z) {
-    if (uPerspective == 0) return z;
-    float d = uNear * uFar / (uFar - z * (uFar - uNear));
-    return (d - uNear) / (uFar - uNear);
-}
+float linearDepth(float z) { return uPerspective == 0 ? z : perspectiveLinearDepth(z, uNear, uFar); }
 
 void main() {
     vec3 rho = materialStopped(materialCoverage(materialTexel(vUv)));

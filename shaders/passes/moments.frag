@@ -6,6 +6,7 @@
 //   4 MSM (Peters & Klein 2015): (t, t^2, t^3, t^4), t = linear depth in [0, 1]
 // With MSAA the depth comes from a multisampled map: the moments of every sample are averaged,
 // which is the point of MSAA for filterable maps (moments are linear, depths are not).
+#include "../common/depth.glsl"
 in vec2 vUv;
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2DMS uDepthMS;
@@ -17,11 +18,7 @@ uniform vec2 uExponents;  // c+, c-
 layout(location = 0) out vec4 outMoments;
 
 vec4 momentsOf(float z) {
-    float t = z;
-    if (uPerspective != 0) {
-        float d = uNear * uFar / (uFar - z * (uFar - uNear));
-        t = (d - uNear) / (uFar - uNear);
-    }
+    float t = uPerspective != 0 ? perspectiveLinearDepth(z, uNear, uFar) : z;
     float x = 2.0 * t - 1.0;
     if (uWarp == 0) return vec4(x, x * x, 0.0, 0.0);
     if (uWarp == 1) return vec4(exp(uExponents.x * x), 0.0, 0.0, 0.0);

@@ -72,6 +72,8 @@ Texture Texture::create2DMultisample(GLenum fmt, int w, int h, int samples) {
                    bytesPerTexel(fmt) * static_cast<std::size_t>(w) * h * samples);
 }
 
+void unbindTextureUnits(GLsizei units) { glBindTextures(0, units, nullptr); }
+
 Texture Texture::view2D(const Texture& source, GLenum format, int layer) {
     GLuint id = 0;
     glGenTextures(1, &id);  // glTextureView needs a name that was never bound: glGen, not glCreate

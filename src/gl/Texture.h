@@ -40,6 +40,10 @@ private:
     std::size_t bytes_ = 0;
 };
 
+// Unbinds the first `units` texture units. llvmpipe rasterises into a texture several times slower
+// while last frame's textures stay bound for sampling, so shadow passes start with this.
+void unbindTextureUnits(GLsizei units = 32);
+
 // Bytes per texel of the internal formats this project uses (for memory statistics).
 std::size_t bytesPerTexel(GLenum internalFormat);
 

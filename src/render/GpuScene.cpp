@@ -76,8 +76,7 @@ void GpuScene::drawTrianglesSorted(const Draw& d, const gl::Program& program, co
     sortedIndices_.update(0, bytes, indices.data());
     const GpuMesh& g = meshes_[d.mesh];
     glVertexArrayElementBuffer(g.vao.id(), sortedIndices_.id());
-    Draw whole = d;
-    draw(whole, program, 0, static_cast<GLsizei>(indices.size()));
+    draw(d, program, 0, static_cast<GLsizei>(indices.size()));
     glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
 }
 

@@ -58,7 +58,7 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
         cameraView_ = cam.view();
     }
     gl::DebugGroup group("cascades");
-    glBindTextures(0, 32, nullptr);  // see DepthAndTintMaps::render
+    gl::unbindTextureUnits();  // see DepthAndTintMaps::render
     target_.bind();
     glViewport(0, 0, res, res);
     const float farDepth = 1.0f;

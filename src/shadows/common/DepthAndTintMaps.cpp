@@ -7,8 +7,6 @@ namespace penumbra::shadows {
 
 using scene::Light;
 
-static constexpr GLsizei kUnboundUnits = 32;  // GL 4.5 guarantees 80 combined units; we use < 24
-
 DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
     depthProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
                                         .fragment = "shaders/passes/shadow_depth.frag"});
@@ -89,7 +87,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
         // Unbind every texture unit first. Measured on llvmpipe: with the previous frame's lookup
         // textures still bound, every shadow map after the first in a frame costs 7-10x more to
         // rasterise (2048^2, one thread: 145-190 ms instead of 15-20 ms), whatever its order.
-        glBindTextures(0, kUnboundUnits, nullptr);
+        gl::unbindTextureUnits();
         LightMaps& m = maps_[i];
         glViewport(0, 0, ls.resolution, ls.resolution);
         for (int f = 0; f < ls.faceCount; ++f) {

@@ -16,11 +16,10 @@ const vec2 kCross13[13] = vec2[](vec2(0, 0), vec2(3, 3), vec2(-3, 3), vec2(3, -3
 // Per channel: 1 where the stored (nearest stochastic occluder) depth lies beyond the receiver.
 // The receiver's depth is extrapolated along its plane to each tap (receiver-plane depth bias):
 // kernels up to 7 texels wide would otherwise shadow sloped receivers with themselves.
-int gLight;
-vec3 passes(ShadowSite s, vec2 texels, float ignored) {
+vec3 passes(ShadowSite s, vec2 texels) {
     vec3 stored = s.cube ? shadowRawLodCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y).rgb
                          : shadowRawLod2D(s.slot, s.coord.xy + texels / s.resolution).rgb;
-    float receiver = linearShadowDepth(gLight, tapReceiverDepth(s, texels));
+    float receiver = linearShadowDepth(s.light, tapReceiverDepth(s, texels));
     // Half floats round the stored depth by up to an ulp: a receiver must not shadow itself by that.
     return vec3(greaterThan(stored, vec3(receiver * (1.0 - uStorageEpsilon))));
 }
@@ -33,28 +32,26 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
                           : s.coord.xy * s.resolution;
     vec2 dsdx = dFdx(sTexels), dsdy = dFdy(sTexels);
     if (!s.inside) return vec3(1.0);
-    gLight = light;
-    float receiver = linearShadowDepth(light, s.depth);
     vec3 sum = vec3(0.0);
     int n;
     if (uFilter == 0) {
         n = 9;
         for (int j = -1; j <= 1; ++j)
-            for (int i = -1; i <= 1; ++i) sum += passes(s, vec2(i, j), receiver);
+            for (int i = -1; i <= 1; ++i) sum += passes(s, vec2(i, j));
     } else if (uFilter == 1 || uFilter == 2) {
         n = uFilter == 1 ? 16 : 20;
         // n taps need about n texels under the disk: r = sqrt(n / π), with room to spare.
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
         float a = 6.2831853 * interleavedGradientNoise(gl_FragCoord.xy);
         mat2 rot = mat2(cos(a), sin(a), -sin(a), cos(a));
-        for (int i = 0; i < n; ++i) sum += passes(s, rot * uPoisson[i] * radius, receiver);
+        for (int i = 0; i < n; ++i) sum += passes(s, rot * uPoisson[i] * radius);
     } else if (uFilter == 3) {
         n = 30;
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
         uint seed = uint(gl_FragCoord.x) * 1973u + uint(gl_FragCoord.y) * 9277u;
         for (int i = 0; i < n; ++i) {
             float u = hashToUnit(seed + uint(i) * 26699u), v = hashToUnit(seed + uint(i) * 26699u + 1u);
-            sum += passes(s, vec2(cos(6.2831853 * u), sin(6.2831853 * u)) * sqrt(v) * radius, receiver);
+            sum += passes(s, vec2(cos(6.2831853 * u), sin(6.2831853 * u)) * sqrt(v) * radius);
         }
     } else {
         n = 13;
@@ -62,7 +59,7 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
         // jitter is meant to be a micro-offset, so it is bounded to one texel.
         vec2 norms = max(vec2(abs(dsdx.x) + abs(dsdx.y), abs(dsdy.x) + abs(dsdy.y)), vec2(1.0 / 6.0));
         vec2 delta = (mod(5.0 * sTexels, vec2(2.0)) - vec2(1.0)) / (6.0 * norms);
-        for (int i = 0; i < 13; ++i) sum += passes(s, kCross13[i] + delta, receiver);
+        for (int i = 0; i < 13; ++i) sum += passes(s, kCross13[i] + delta);
     }
     return sum / float(n);
 }
