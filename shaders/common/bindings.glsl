@@ -14,4 +14,5 @@
 #define UNIT_SHADOW_CUBE 16
 #define UNIT_TINT_CUBE 18
 #define UNIT_RAW_CUBE 20
-#define UNIT_CASCADES 22      // sampler2DArrayShadow of the cascaded sun
+#define UNIT_LAYERED 22       // sampler2DArrayShadow of a LayeredDepthMap (cascades, LiSPSM tiles)
+#define UNIT_SCREEN_SHADOW 23 // R8 array, per-light visibility in screen space (shadow volumes, planar)

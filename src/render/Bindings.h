@@ -16,7 +16,8 @@ inline constexpr unsigned kUnitRaw2D = 12;
 inline constexpr unsigned kUnitShadowCube = 16;
 inline constexpr unsigned kUnitTintCube = 18;
 inline constexpr unsigned kUnitRawCube = 20;
-inline constexpr unsigned kUnitCascades = 22;
+inline constexpr unsigned kUnitLayered = 22;  // a technique's LayeredDepthMap (cascades, LiSPSM tiles)
+inline constexpr unsigned kUnitScreenShadow = 23;  // screen-space visibility (shadow volumes, planar)
 
 inline constexpr unsigned kLightBlockBinding = 0;
 

@@ -7,17 +7,14 @@ namespace penumbra::shadows {
 
 using scene::Light;
 
-// Maps clip space [-1,1]^3 to texture space [0,1]^3.
-static const glm::mat4 kClipToTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                                        glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+const glm::mat4 kClipToTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
 static glm::vec3 anyPerpendicular(const glm::vec3& d) {
     return std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
 }
 
-static std::array<glm::vec3, 8> frustumCorners(const scene::Camera& camera, float aspect, float farDistance) {
-    const glm::mat4 invViewProj =
-        glm::inverse(glm::perspective(glm::radians(camera.fovDeg), aspect, camera.near, farDistance) * camera.view());
+std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj) {
+    const glm::mat4 invViewProj = glm::inverse(viewProj);
     std::array<glm::vec3, 8> corners{};
     for (int i = 0; i < 8; ++i) {
         const glm::vec4 ndc{(i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f};
@@ -38,7 +35,8 @@ static LightSpace directional(const Light& light, int res, const scene::Bounds& 
     // What the camera can see, no further than the scene reaches.
     const float farDistance = std::min(camera.far, glm::length(camera.position - center) + radius);
     scene::Bounds viewLs;
-    for (const auto& c : frustumCorners(camera, aspect, std::max(farDistance, camera.near * 2.0f)))
+    for (const auto& c : frustumCorners(glm::perspective(glm::radians(camera.fovDeg), aspect, camera.near,
+                                                       std::max(farDistance, camera.near * 2.0f)) * camera.view()))
         viewLs.add(glm::vec3(view * glm::vec4(c, 1.0f)));
     glm::vec2 lo = glm::max(glm::vec2(sceneLs.min), glm::vec2(viewLs.min));
     glm::vec2 hi = glm::min(glm::vec2(sceneLs.max), glm::vec2(viewLs.max));

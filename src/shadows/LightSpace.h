@@ -30,6 +30,12 @@ struct LightSpace {
 LightSpace computeLightSpace(const scene::Light& light, int resolution, const scene::Bounds& sceneBounds,
                              const scene::Camera& camera, float aspect);
 
+// Maps clip space [-1,1]^3 to texture space [0,1]^3.
+extern const glm::mat4 kClipToTexture;
+
+// World-space corners of the clip volume of `viewProj` (bit 0: x, 1: y, 2: z; set = +1).
+std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj);
+
 // The six view matrices of a cube map, in GL's face order (+X, -X, +Y, -Y, +Z, -Z).
 std::array<glm::mat4, 6> cubeFaceViews(const glm::vec3& position);
 

@@ -6,6 +6,7 @@
 #include "shadows/none/NoShadows.h"
 #include "shadows/pcf/PercentageCloserFilter.h"
 #include "shadows/pcss/PercentageCloserSoftShadows.h"
+#include "shadows/warped/WarpedShadowMap.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -52,6 +53,12 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
         moments("msm", "moment shadow maps, Hamburger 4MSM (Peters & Klein 2015)", MomentShadowMap::Warp::Moments4),
         {"cascaded", "cascaded / parallel-split shadow maps (Zhang et al. 2006) for the sun, stabilised, blended",
          [] { return std::make_unique<CascadedShadowMap>(); }},
+        {"lispsm", "light-space perspective shadow maps (Wimmer et al. 2004) for the sun, optimal n, uniform near degenerate angles",
+         [] { return std::make_unique<WarpedShadowMap>("lispsm", WarpedShadowMap::Warp::Lispsm, 1, 1); }},
+        {"lispsm-tiled", "seed 002 §3.5: the screen in cols x rows tiles (default 2x2), each tile's sub-frustum its own LiSPSM",
+         [] { return std::make_unique<WarpedShadowMap>("lispsm-tiled", WarpedShadowMap::Warp::Lispsm, 2, 2); }},
+        {"psm", "perspective shadow maps (Stamminger & Drettakis 2002) for the sun, inverted projection behind the viewer",
+         [] { return std::make_unique<WarpedShadowMap>("psm", WarpedShadowMap::Warp::Psm, 1, 1); }},
         {"cssm1", "coloured stochastic shadow maps (McGuire & Enderton 2011), one map per channel",
          [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::PerChannel); }},
         {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (seed 000 ch. 5)",

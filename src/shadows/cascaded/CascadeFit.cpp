@@ -1,5 +1,7 @@
 #include "shadows/cascaded/CascadeFit.h"
 
+#include "shadows/LightSpace.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -20,16 +22,6 @@ std::vector<float> cascadeSplits(float n, float f, int m, float lambda) {
     return c;
 }
 
-static std::array<glm::vec3, 8> sliceCorners(const scene::Camera& cam, float aspect, float n, float f) {
-    const glm::mat4 inv = glm::inverse(glm::perspective(glm::radians(cam.fovDeg), aspect, n, f) * cam.view());
-    std::array<glm::vec3, 8> corners{};
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec4 w = inv * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f, (i & 4) ? 1.0f : -1.0f, 1.0f);
-        corners[static_cast<std::size_t>(i)] = glm::vec3(w) / w.w;
-    }
-    return corners;
-}
-
 Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear, float splitFar,
                    const scene::Bounds& sceneBounds, int res, bool stabilize) {
     const glm::vec3 dir = light.direction;
@@ -37,7 +29,7 @@ Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float
     // A light view through the world origin: only its orientation matters; positions are
     // expressed in it so that texel snapping is relative to a fixed grid.
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, up);
-    const auto corners = sliceCorners(camera, aspect, splitNear, splitFar);
+    const auto corners = frustumCorners(glm::perspective(glm::radians(camera.fovDeg), aspect, splitNear, splitFar) * camera.view());
 
     glm::vec2 lo, hi;
     if (stabilize) {
@@ -68,8 +60,7 @@ Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float
     c.depthNear = -ls.max.z - margin;
     c.depthFar = -ls.min.z + margin;
     c.viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, c.depthNear, c.depthFar) * view;
-    c.shadowMatrix = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)) *
-                     c.viewProj;
+    c.shadowMatrix = kClipToTexture * c.viewProj;
     c.texelWorld = std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(res);
     return c;
 }

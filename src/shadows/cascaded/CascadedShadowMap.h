@@ -1,9 +1,8 @@
 #pragma once
-#include "gl/Framebuffer.h"
-#include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/cascaded/CascadeFit.h"
 #include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/LayeredDepthMap.h"
 
 namespace penumbra::shadows {
 
@@ -13,7 +12,6 @@ namespace penumbra::shadows {
 // the coloured tint use the shared per-light maps.
 class CascadedShadowMap final : public ShadowTechnique {
 public:
-    CascadedShadowMap();
     std::string name() const override { return "cascaded"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
@@ -26,14 +24,11 @@ public:
 private:
     float count_ = 4, lambda_ = 0.75f, stabilize_ = 1, blend_ = 0.1f, select_ = 0, debugTint_ = 0, freeze_ = 0,
           maxDistance_ = 0;
-    int light_ = -1;
+    int light_ = -1, fittedResolution_ = 0;
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;
     std::vector<Cascade> fitted_;
-    gl::Texture cascades_;
-    gl::Framebuffer target_;
-    int resolution_ = 0, layers_ = 0;
-    gl::Program casters_;
+    LayeredDepthMap cascades_;
     DepthAndTintMaps maps_;
 };
 

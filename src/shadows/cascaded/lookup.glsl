@@ -3,7 +3,7 @@
 // point), and blended with the next one near the split so the border does not show.
 #include "shaders/common/shadow_filtering.glsl"
 
-layout(binding = UNIT_CASCADES) uniform sampler2DArrayShadow uCascades;
+layout(binding = UNIT_LAYERED) uniform sampler2DArrayShadow uCascades;
 uniform int uCascadeLight;        // index of the cascaded light, -1: none
 uniform int uCascadeCount;
 uniform float uCascadeSplits[9];  // view-space distances

@@ -1,0 +1,55 @@
+#include "shadows/common/LayeredDepthMap.h"
+
+#include "gl/Debug.h"
+
+#include <algorithm>
+
+namespace penumbra::shadows {
+
+LayeredDepthMap::LayeredDepthMap() {
+    casters_ = gl::Program::build({.vertex = "src/shadows/common/layered_caster.vert",
+                                   .fragment = "shaders/passes/shadow_depth.frag",
+                                   .geometry = "src/shadows/common/layered_caster.geom"});
+}
+
+void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
+                             const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes) {
+    const int count = std::clamp(static_cast<int>(viewProj.size()), 1, kMaxLayers);
+    if (res != resolution_ || count != layers_) {
+        texture_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, count);
+        texture_.setFilter(GL_NEAREST, GL_NEAREST);
+        texture_.setDepthCompare(true);
+        view_ = gl::Texture::view2D(texture_, GL_DEPTH_COMPONENT32F, 0);
+        target_ = gl::Framebuffer();
+        target_.attach(GL_DEPTH_ATTACHMENT, texture_);  // layered: the geometry shader picks gl_Layer
+        target_.setNoColor();
+        target_.checkComplete("layered shadow map");
+        resolution_ = res;
+        layers_ = count;
+    }
+    std::vector<glm::vec4> planes(clipPlanes);
+    planes.resize(static_cast<std::size_t>(count), glm::vec4(0, 0, 0, 1));  // w = 1: keep everything
+    gl::unbindTextureUnits();  // see DepthAndTintMaps::render
+    target_.bind();
+    glViewport(0, 0, res, res);
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glEnable(GL_CLIP_DISTANCE0);
+    glPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
+    glProgramUniformMatrix4fv(casters_.id(), casters_.location("uLayerViewProj[0]"), count, GL_FALSE, &viewProj[0][0][0]);
+    glProgramUniform4fv(casters_.id(), casters_.location("uLayerClip[0]"), count, &planes[0].x);
+    casters_.set("uLayerCount", count);
+    frame.drawCasters(casters_, Casters::Opaque);
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+DebugView LayeredDepthMap::debugView(const std::string& label, int) const {
+    return {label, view_.id(), GL_TEXTURE_2D, true, 0};
+}
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,37 @@
+#pragma once
+// A depth array with one layer per sub-view of one light (cascades, LiSPSM tiles), all rendered
+// in a single pass: the geometry shader instances each caster triangle into every layer.
+#include "gl/Framebuffer.h"
+#include "gl/Program.h"
+#include "gl/Texture.h"
+#include "shadows/ShadowTechnique.h"
+
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace penumbra::shadows {
+
+class LayeredDepthMap {
+public:
+    static constexpr int kMaxLayers = 16;  // the geometry shader's invocation count
+
+    LayeredDepthMap();
+    // Opaque casters of `frame` into layer i through viewProj[i]. clipPlanes (optional, world
+    // space, one per layer) keep only the half-space dot(plane, P) >= 0.
+    void render(const ShadowFrame& frame, const scene::Light& light, int resolution, const std::vector<glm::mat4>& viewProj,
+                const std::vector<glm::vec4>& clipPlanes = {});
+    void bind(unsigned unit) const { texture_.bind(unit); }
+    bool empty() const { return texture_.id() == 0; }
+    int layers() const { return layers_; }
+    std::size_t memoryBytes() const { return texture_.memoryBytes(); }
+    DebugView debugView(const std::string& label, int layer) const;
+
+private:
+    gl::Texture texture_;
+    gl::Texture view_;  // layer 0 as a plain 2D texture for the debug overlay
+    gl::Framebuffer target_;
+    int resolution_ = 0, layers_ = 0;
+    gl::Program casters_;
+};
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,63 @@
+#pragma once
+// View-dependent warped shadow maps for a directional light, the geometry (pure math, no GL):
+//   LiSPSM (Wimmer, Scherzer & Purgathofer 2004): a perspective warp whose axis lies in the
+//     shadow-map plane, along the view direction projected onto it; the light stays directional.
+//   PSM (Stamminger & Drettakis 2002): the shadow map taken in the camera's post-perspective
+//     space, where the sun becomes a point light (in front of or behind the viewer) or stays
+//     directional (light parallel to the image plane).
+// Both are fitted to a body B = (camera or tile sub-frustum) ∩ scene bounds, extruded towards
+// the light to keep every caster that can shadow it.
+#include "scene/Camera.h"
+#include "scene/Light.h"
+#include "scene/Mesh.h"
+
+#include <array>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace penumbra::shadows {
+
+struct WarpedView {
+    glm::mat4 viewProj{1.0f};      // world -> clip of the shadow map
+    glm::mat4 shadowMatrix{1.0f};  // world -> [0,1]^3 texture space (after the divide by w)
+    // World half-space the caster pass keeps (dot(plane, P) >= 0): geometry behind a warp's
+    // projection centre would wrap through infinity into the map.
+    glm::vec4 clipPlane{0.0f, 0.0f, 0.0f, 1.0f};
+    float n = 0.0f;         // LiSPSM: distance of the projection centre from the body
+    float sinGamma = 0.0f;  // sine of the angle between view and light directions
+    bool uniform = false;   // fell back to a plain orthographic fit (degenerate angles)
+    bool inverted = false;  // PSM: the sun behind the viewer, the inverted projection
+    bool pointInPostPerspective = false;  // PSM: the light became a point light
+    bool valid = false;     // false: the body is empty (the camera sees nothing of the scene)
+};
+
+// Vertices of the convex body (clip volume of `viewProj`) ∩ box.
+std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& viewProj, const scene::Bounds& box);
+
+// `points` and, for each, where the ray towards the light leaves `box` (the casters' reach).
+std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,
+                                          const scene::Bounds& box);
+
+// Projection of tile (col, row) of a cols x rows grid over the camera's image (row 0 at the
+// bottom), the sub-frustum the seed's slave cameras used (002 §3.5).
+glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, int rows, int col, int row, float far);
+
+struct LispsmOptions {
+    float nScale = 1.0f;          // multiplies n_opt (1: Wimmer's optimum)
+    float minSinGamma = 0.05f;    // below this the warp degenerates: plain orthographic fit
+};
+
+// LiSPSM for the (sub-)frustum `cameraViewProj` seen from `camera`.
+WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
+                     const scene::Bounds& scene, const LispsmOptions& options = {});
+
+// PSM for the same. `minNear` bounds the virtual camera's near plane from below, as a share of
+// the body's depth: the slide-back that keeps every caster in front of the virtual camera.
+WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
+                  const scene::Bounds& scene, float minNear = 0.02f);
+
+// The world size of one shadow-map texel at P, measured across the light (the coarser of two
+// perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.
+float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const glm::vec3& lightDirection, int resolution);
+
+}  // namespace penumbra::shadows

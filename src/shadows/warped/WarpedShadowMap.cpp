@@ -1,0 +1,95 @@
+#include "shadows/warped/WarpedShadowMap.h"
+
+#include "gl/Debug.h"
+#include "render/Bindings.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::shadows {
+
+WarpedShadowMap::WarpedShadowMap(std::string name, Warp warp, int cols, int rows)
+    : name_(std::move(name)), warp_(warp), cols_(static_cast<float>(cols)), rows_(static_cast<float>(rows)) {}
+
+std::vector<Parameter> WarpedShadowMap::parameters() {
+    std::vector<Parameter> p = {{"cols", &cols_, 1, 4}, {"rows", &rows_, 1, 4}};
+    if (warp_ == Warp::Lispsm) {
+        p.push_back({"n_scale", &nScale_, 0.05f, 20.0f});
+        p.push_back({"min_sin_gamma", &minSinGamma_, 0.0f, 1.0f});
+    } else {
+        p.push_back({"min_near", &psmMinNear_, 0.001f, 1.0f});
+    }
+    p.push_back({"debug_tint", &debugTint_, 0, 1});
+    p.push_back({"freeze", &freeze_, 0, 1});
+    return p;
+}
+
+void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
+    maps_.render(frame);  // other lights, and every light's coloured tint
+    const auto& lights = *frame.lights;
+    const std::vector<int> slots = DepthAndTintMaps::slots(lights);
+    light_ = -1;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].type == scene::Light::Type::Directional && slots[i] >= 0) {
+            light_ = static_cast<int>(i);
+            break;
+        }
+    if (light_ < 0 || !frame.camera) return;
+    const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
+    const scene::Camera& cam = *frame.camera;
+    const glm::ivec2 grid(std::clamp(static_cast<int>(std::lround(cols_)), 1, 4), std::clamp(static_cast<int>(std::lround(rows_)), 1, 4));
+    const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
+    if (freeze_ < 0.5f || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) {
+        grid_ = grid;
+        // Tiles reach only as far as the scene does: a 1 km far plane must not thin the warp.
+        const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
+                                                0.5f * glm::length(frame.sceneBounds.extent()));
+        const float reach = std::max(far, cam.near * 2.0f);
+        views_.clear();
+        for (int r = 0; r < grid.y; ++r)
+            for (int c = 0; c < grid.x; ++c) {
+                const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
+                WarpedView v = warp_ == Warp::Lispsm
+                                   ? fitLispsm(sun, cam, tile, frame.sceneBounds, {nScale_, minSinGamma_})
+                                   : fitPsm(sun, cam, tile, frame.sceneBounds, psmMinNear_);
+                if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
+                    v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
+                    v.shadowMatrix = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].shadowMatrix;
+                }
+                views_.push_back(v);
+            }
+        cameraViewProj_ = cam.projection(frame.aspect) * cam.view();
+    }
+    resolution_ = res;
+    gl::DebugGroup group(name_.c_str());
+    std::vector<glm::mat4> viewProj;
+    std::vector<glm::vec4> planes;
+    for (const auto& v : views_) {
+        viewProj.push_back(v.viewProj);
+        planes.push_back(v.clipPlane);
+    }
+    warped_.render(frame, sun, res, viewProj, planes);
+}
+
+void WarpedShadowMap::bindLookup(const gl::Program& lighting) const {
+    maps_.bind();
+    lighting.set("uWarpedLight", warped_.empty() ? -1 : light_);
+    if (light_ < 0 || warped_.empty()) return;
+    warped_.bind(render::kUnitLayered);
+    std::vector<glm::mat4> matrices;
+    for (const auto& v : views_) matrices.push_back(v.shadowMatrix);
+    glProgramUniformMatrix4fv(lighting.id(), lighting.location("uWarpedMatrix[0]"), static_cast<GLsizei>(matrices.size()),
+                              GL_FALSE, &matrices[0][0][0]);
+    lighting.set("uWarpedGrid", grid_);
+    lighting.set("uWarpedCameraViewProj", cameraViewProj_);
+    lighting.set("uWarpedResolution", static_cast<float>(resolution_));
+    lighting.set("uWarpedDebug", debugTint_ > 0.5f ? 1 : 0);
+}
+
+std::vector<DebugView> WarpedShadowMap::debugViews() const {
+    auto views = maps_.debugViews();
+    if (!warped_.empty()) views.insert(views.begin(), warped_.debugView(name_ + " tile 0", 0));
+    return views;
+}
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,38 @@
+#pragma once
+#include "shadows/ShadowTechnique.h"
+#include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/LayeredDepthMap.h"
+#include "shadows/warped/WarpFit.h"
+
+namespace penumbra::shadows {
+
+// View-dependent shadow maps for the first shadowed directional light: LiSPSM or PSM
+// (WarpFit.h), over the whole view or per tile of a cols x rows grid over the screen, each tile's
+// sub-frustum with its own warped map (seed 002 §3.5, its -cw/-ch). All tiles render in one
+// layered pass. Other lights, and every light's coloured tint, use the shared per-light maps.
+class WarpedShadowMap final : public ShadowTechnique {
+public:
+    enum class Warp { Lispsm, Psm };
+    WarpedShadowMap(std::string name, Warp warp, int cols, int rows);
+    std::string name() const override { return name_; }
+    std::filesystem::path lookupShader() const override { return "src/shadows/warped/lookup.glsl"; }
+    void renderMaps(const ShadowFrame& frame) override;
+    void bindLookup(const gl::Program& lighting) const override;
+    std::size_t memoryBytes() const override { return maps_.memoryBytes() + warped_.memoryBytes(); }
+    std::vector<DebugView> debugViews() const override;
+    std::vector<Parameter> parameters() override;
+    const std::vector<WarpedView>& views() const { return views_; }
+
+private:
+    std::string name_;
+    Warp warp_;
+    float cols_, rows_, nScale_ = 1.0f, minSinGamma_ = 0.05f, psmMinNear_ = 0.02f, debugTint_ = 0, freeze_ = 0;
+    int light_ = -1, resolution_ = 0;
+    glm::ivec2 grid_{1, 1};
+    glm::mat4 cameraViewProj_{1.0f};
+    std::vector<WarpedView> views_;
+    LayeredDepthMap warped_;
+    DepthAndTintMaps maps_;
+};
+
+}  // namespace penumbra::shadows
