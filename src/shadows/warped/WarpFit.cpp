@@ -215,8 +215,16 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const gl
     w.pointInPostPerspective = true;
     w.inverted = light.w < 0.0f;  // the sun behind the viewer
     const glm::vec3 lp = glm::vec3(light) / light.w;
-    const glm::vec3 axis = glm::normalize(centre - lp);
-    const glm::mat4 view = glm::lookAt(lp, centre, perpendicularTo(axis));
+    // Look from the light's image at the body's centre, unless the body then spans more than
+    // ~150°: the image lies just beyond the far plane (z_ndc = (f+n)/(f-n), the plane at infinity)
+    // when the sun is near the view axis, and only the axis along -z keeps every point in front.
+    glm::vec3 axis = glm::normalize(centre - lp);
+    for (const auto& p : q)
+        if (glm::dot(glm::normalize(p - lp), axis) < 0.26f) {
+            axis = glm::vec3(0.0f, 0.0f, -1.0f);
+            break;
+        }
+    const glm::mat4 view = glm::lookAt(lp, lp + axis, perpendicularTo(axis));
     float dmin = std::numeric_limits<float>::max(), dmax = 0.0f;
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     for (const auto& p : q) {
