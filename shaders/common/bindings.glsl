@@ -16,3 +16,4 @@
 #define UNIT_RAW_CUBE 20
 #define UNIT_LAYERED 22       // sampler2DArrayShadow of a LayeredDepthMap (cascades, LiSPSM tiles)
 #define UNIT_SCREEN_SHADOW 23 // R8 array, per-light visibility in screen space (shadow volumes, planar)
+#define UNIT_SCREEN_DEPTH 24  // the camera depth pre-pass of that mask

@@ -18,6 +18,7 @@ inline constexpr unsigned kUnitTintCube = 18;
 inline constexpr unsigned kUnitRawCube = 20;
 inline constexpr unsigned kUnitLayered = 22;  // a technique's LayeredDepthMap (cascades, LiSPSM tiles)
 inline constexpr unsigned kUnitScreenShadow = 23;  // screen-space visibility (shadow volumes, planar)
+inline constexpr unsigned kUnitScreenDepth = 24;   // the camera depth pre-pass it belongs to
 
 inline constexpr unsigned kLightBlockBinding = 0;
 

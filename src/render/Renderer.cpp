@@ -114,6 +114,14 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws)
                 if (d.castsShadow && d.translucent == wantTranslucent) gpu_.draw(d, program);
         };
+        frame.drawSurfaces = [&](const gl::Program& program, int onlyObject) {
+            for (const Draw& d : draws)
+                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject)))
+                    gpu_.draw(d, program);
+        };
+        frame.scene = &scene_;
+        frame.time = time;
+        frame.viewport = {width, height};
         technique_->renderMaps(frame);
         timers_[0].end();
     }

@@ -6,6 +6,8 @@
 #include "shadows/none/NoShadows.h"
 #include "shadows/pcf/PercentageCloserFilter.h"
 #include "shadows/pcss/PercentageCloserSoftShadows.h"
+#include "shadows/planar/PlanarProjectedShadows.h"
+#include "shadows/volumes/ShadowVolumes.h"
 #include "shadows/warped/WarpedShadowMap.h"
 
 #include <algorithm>
@@ -59,6 +61,10 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
          [] { return std::make_unique<WarpedShadowMap>("lispsm-tiled", WarpedShadowMap::Warp::Lispsm, 2, 2); }},
         {"psm", "perspective shadow maps (Stamminger & Drettakis 2002) for the sun, inverted projection behind the viewer",
          [] { return std::make_unique<WarpedShadowMap>("psm", WarpedShadowMap::Warp::Psm, 1, 1); }},
+        {"shadow-volumes", "stencil shadow volumes (Crow 1977): silhouettes from adjacency, z-fail with caps (Carmack) or z-pass",
+         [] { return std::make_unique<ShadowVolumes>(); }},
+        {"planar", "planar projected shadows (Blinn 1988) onto the largest flat receiver, stencil against spill and double blending",
+         [] { return std::make_unique<PlanarProjectedShadows>(); }},
         {"cssm1", "coloured stochastic shadow maps (McGuire & Enderton 2011), one map per channel",
          [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::PerChannel); }},
         {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (seed 000 ch. 5)",

@@ -6,6 +6,7 @@
 // Registry.cpp.
 #include "gl/Program.h"
 #include "scene/Camera.h"
+#include "scene/Scene.h"
 #include "shadows/LightSpace.h"
 
 #include <cstddef>
@@ -29,6 +30,12 @@ struct ShadowFrame {
     // Draws the chosen casters with `program` bound (uModel and material uniforms are set,
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
     std::function<void(const gl::Program& program, Casters casters)> drawCasters;
+    // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0) with
+    // `program` bound: depth pre-passes and receiver masks of screen-space techniques.
+    std::function<void(const gl::Program& program, int onlyObject)> drawSurfaces;
+    const scene::Scene* scene = nullptr;  // geometry-based techniques (shadow volumes, planar)
+    float time = 0.0f;                    // scene time of the frame (object transforms)
+    glm::ivec2 viewport{0};               // size of the frame being rendered
     std::uint32_t frameIndex = 0;  // seeds per-frame randomness (stochastic techniques)
     const scene::Camera* camera = nullptr;  // view-dependent techniques (cascades) fit to it
     float aspect = 1.0f;

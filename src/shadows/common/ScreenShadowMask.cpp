@@ -1,0 +1,86 @@
+#include "shadows/common/ScreenShadowMask.h"
+
+#include "gl/Debug.h"
+#include "render/Bindings.h"
+
+#include <algorithm>
+
+namespace penumbra::shadows {
+
+ScreenShadowMask::ScreenShadowMask() {
+    depthProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/shadow_depth.frag"});
+    stencilToMask_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/shadowed.frag"});
+}
+
+void ScreenShadowMask::begin(const ShadowFrame& frame) {
+    const int lights = std::max(1, static_cast<int>(frame.lights->size()));
+    if (frame.viewport != size_ || lights != layerCount_) {
+        size_ = frame.viewport;
+        layerCount_ = lights;
+        mask_ = gl::Texture::create2DArray(GL_R8, size_.x, size_.y, lights);
+        mask_.setFilter(GL_NEAREST, GL_NEAREST);
+        depth_ = gl::Texture::create2D(GL_DEPTH24_STENCIL8, size_.x, size_.y);
+        depth_.setFilter(GL_NEAREST, GL_NEAREST);
+        layers_.clear();
+        layerViews_.clear();
+        for (int i = 0; i < lights; ++i) {
+            gl::Framebuffer fb;
+            fb.attachLayer(GL_COLOR_ATTACHMENT0, mask_, i);
+            fb.attach(GL_DEPTH_STENCIL_ATTACHMENT, depth_);
+            fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+            fb.checkComplete("screen shadow mask");
+            layers_.push_back(std::move(fb));
+            layerViews_.push_back(gl::Texture::view2D(mask_, GL_R8, i));
+        }
+    }
+    const scene::Camera& cam = *frame.camera;
+    viewProj_ = cam.projection(frame.aspect) * cam.view();
+    depthRange_ = {cam.near, cam.far};
+    gl::unbindTextureUnits();
+    layers_[0].bind();
+    glViewport(0, 0, size_.x, size_.y);
+    glClearNamedFramebufferfi(layers_[0].id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    depthProgram_.set("uLightViewProj", viewProj_);
+    frame.drawSurfaces(depthProgram_, -1);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void ScreenShadowMask::beginLight(int light, int stencil) {
+    const gl::Framebuffer& fb = layers_[static_cast<std::size_t>(light)];
+    fb.bind();
+    glViewport(0, 0, size_.x, size_.y);
+    const float lit[4] = {1, 1, 1, 1};
+    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, lit);
+    glClearNamedFramebufferiv(fb.id(), GL_STENCIL, 0, &stencil);
+}
+
+void ScreenShadowMask::shadowWhereStencilNonZero() {
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    stencilToMask_.use();
+    emptyVao_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_STENCIL_TEST);
+}
+
+void ScreenShadowMask::bind(const gl::Program& lighting) const {
+    if (mask_.id() == 0) return;
+    mask_.bind(render::kUnitScreenShadow);
+    depth_.bind(render::kUnitScreenDepth);
+    lighting.set("uScreenMaskDepthRange", depthRange_);
+}
+
+std::vector<DebugView> ScreenShadowMask::debugViews() const {
+    std::vector<DebugView> views;
+    for (std::size_t i = 0; i < layerViews_.size() && i < 2; ++i)
+        views.push_back({"screen mask, light " + std::to_string(i), layerViews_[i].id(), GL_TEXTURE_2D, false, 0});
+    return views;
+}
+
+}  // namespace penumbra::shadows

@@ -1,0 +1,109 @@
+#include "shadows/volumes/ShadowVolumes.h"
+
+#include "gl/Debug.h"
+#include "util/Log.h"
+
+namespace penumbra::shadows {
+
+ShadowVolumes::ShadowVolumes() {
+    volumes_ = gl::Program::build({.vertex = "src/shadows/volumes/volume.vert",
+                                   .fragment = "src/shadows/volumes/volume.frag",
+                                   .geometry = "src/shadows/volumes/volume.geom"});
+}
+
+std::size_t ShadowVolumes::memoryBytes() const {
+    std::size_t bytes = maps_.memoryBytes() + mask_.memoryBytes();
+    for (const auto& m : meshes_) bytes += m.positions.size() + m.indices.size();
+    return bytes;
+}
+
+// Adjacency for every mesh, once per scene; open casters are reported by name.
+void ShadowVolumes::upload(const ShadowFrame& frame) {
+    if (uploaded_ == frame.scene) return;
+    uploaded_ = frame.scene;
+    meshes_.clear();
+    for (const auto& mesh : frame.scene->meshes) {
+        const AdjacencyMesh adj = buildAdjacency(mesh);
+        GpuAdjacency g{gl::Buffer(std::span<const glm::vec3>(adj.positions)), gl::Buffer(std::span<const std::uint32_t>(adj.indices)),
+                       gl::VertexArray(), adj.closed()};
+        glVertexArrayVertexBuffer(g.vao.id(), 0, g.positions.id(), 0, sizeof(glm::vec3));
+        glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
+        g.vao.attribute(0, 0, 3, 0);
+        meshes_.push_back(std::move(g));
+        if (adj.closed()) continue;
+        for (const auto& obj : frame.scene->objects)
+            if (obj.castsShadow && &frame.scene->meshes[static_cast<std::size_t>(obj.mesh)] == &mesh)
+                log::warn("shadow volumes: '{}' is not a closed mesh ({} border edges, {} shared by more than two triangles "
+                          "or wound inconsistently); its volume is closed along the border, right for the side facing the "
+                          "light only",
+                          obj.name.empty() ? std::string("unnamed object") : obj.name, adj.boundaryEdges, adj.nonManifoldEdges);
+    }
+}
+
+void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light) {
+    const bool point = light.type != scene::Light::Type::Directional;
+    volumes_.set("uLight", point ? glm::vec4(light.position, 1.0f) : glm::vec4(glm::normalize(light.direction), 0.0f));
+    volumes_.set("uViewProj", mask_.viewProj());
+    volumes_.set("uCaps", zFail_ > 0.5f ? 1 : 0);
+    // Past every receiver: the scene's diagonal plus the light's distance to the scene.
+    const float diagonal = glm::length(frame.sceneBounds.extent());
+    const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
+    volumes_.set("uExtrusion", infinite_ > 0.5f ? 0.0f : 2.0f * (diagonal + lightDistance));
+    volumes_.use();
+    const scene::Scene& scene = *frame.scene;
+    for (const auto& obj : scene.objects) {
+        if (!obj.castsShadow) continue;
+        volumes_.set("uModel", obj.transformAt(frame.time));
+        const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj.mesh)];
+        meshes_[static_cast<std::size_t>(obj.mesh)].vao.bind();
+        for (const auto& part : mesh.parts) {
+            if (scene.material(obj, part).translucent()) continue;  // tints through the shared maps instead
+            glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(part.indexCount * 2), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * 2 * sizeof(std::uint32_t)));
+        }
+    }
+}
+
+void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
+    maps_.render(frame);  // coloured tint, and the fallback for glass the pre-pass does not see
+    if (!frame.scene || !frame.camera || frame.viewport.x <= 0) return;
+    upload(frame);
+    gl::DebugGroup group("shadow volumes");
+    mask_.begin(frame);
+    const auto& lights = *frame.lights;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        mask_.beginLight(static_cast<int>(i));
+        if (!lights[i].shadow.enabled) continue;
+        // Count volume faces per pixel: z-fail counts those behind the visible surface (back +1,
+        // front -1), robust when the camera sits inside a volume; z-pass those in front of it
+        // (front +1, back -1), which breaks there. Non-zero: in shadow.
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glEnable(GL_DEPTH_CLAMP);  // the far cap and the sides reach infinity
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xff);
+        if (zFail_ > 0.5f) {
+            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        } else {
+            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+        }
+        drawVolumes(frame, lights[i]);
+        glDisable(GL_DEPTH_CLAMP);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_TRUE);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        mask_.shadowWhereStencilNonZero();
+    }
+    glDisable(GL_STENCIL_TEST);
+}
+
+void ShadowVolumes::bindLookup(const gl::Program& lighting) const {
+    maps_.bind();
+    mask_.bind(lighting);
+}
+
+}  // namespace penumbra::shadows
