@@ -29,9 +29,10 @@ scene::Scene sceneFromJson(const std::string& json) {
 }
 
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int width, int height,
-                    const std::string& technique) {
+                    const std::string& technique, const std::vector<std::pair<std::string, float>>& parameters) {
     render::RenderOptions options;
     options.technique = technique;
+    options.parameters = parameters;
     options.output = mode;
     options.debugLight = light;
     render::Renderer renderer(scene, options);
