@@ -47,6 +47,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     lighting_ = buildLighting(*technique_);
     resolve_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/resolve.frag"});
     overlay_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/overlay.frag"});
+    lines_ = gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"});
 }
 
 void Renderer::setTechnique(const std::string& name) {
@@ -137,6 +138,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         gl::DebugGroup group("opaque");
         timers_[1].begin();
         drawSurfaces(draws, false, camera, aspect);
+        if (options_.debugOverlay) drawDebugLines(camera, aspect);
         timers_[1].end();
     }
     {
@@ -162,6 +164,28 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         timers_[3].end();
     }
     times_ = {timers_[0].milliseconds(), timers_[1].milliseconds(), timers_[2].milliseconds(), timers_[3].milliseconds()};
+}
+
+// The technique's world-space lines (cascade frusta, ...), depth-tested against the scene.
+void Renderer::drawDebugLines(const scene::Camera& camera, float aspect) {
+    const auto lines = technique_->debugLines();
+    if (lines.empty()) return;
+    std::vector<glm::vec3> vertices;  // position, colour, interleaved
+    for (const auto& l : lines) vertices.insert(vertices.end(), {l.a, l.color, l.b, l.color});
+    const std::size_t bytes = vertices.size() * sizeof(glm::vec3);
+    if (lineVertices_.size() < bytes) {
+        lineVertices_ = gl::Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        glVertexArrayVertexBuffer(lineVao_.id(), 0, lineVertices_.id(), 0, 2 * sizeof(glm::vec3));
+        lineVao_.attribute(0, 0, 3, 0);
+        lineVao_.attribute(1, 0, 3, sizeof(glm::vec3));
+    }
+    lineVertices_.update(0, bytes, vertices.data());
+    lines_.set("uViewProj", camera.projection(aspect) * camera.view());
+    lines_.use();
+    lineVao_.bind();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(vertices.size() / 2));
 }
 
 void Renderer::prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect) {

@@ -71,6 +71,7 @@ public:
 private:
     void ensureTargets(int width, int height);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
+    void drawDebugLines(const scene::Camera& camera, float aspect);
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
     void drawOverlay(GLuint target, int width, int height);
@@ -79,7 +80,9 @@ private:
     RenderOptions options_;
     GpuScene gpu_;
     std::unique_ptr<shadows::ShadowTechnique> technique_;
-    gl::Program lighting_, resolve_, overlay_;
+    gl::Program lighting_, resolve_, overlay_, lines_;
+    gl::Buffer lineVertices_;
+    gl::VertexArray lineVao_;
     std::unique_ptr<OrderIndependentTransparency> oit_;  // built on first use, per technique
     gl::Buffer lightBlock_;
     gl::VertexArray emptyVao_;

@@ -51,6 +51,12 @@ struct DebugView {
     int layer = 0;
 };
 
+// A world-space line segment for the debug overlay (cascade frusta, light boxes).
+struct DebugLine {
+    glm::vec3 a, b;
+    glm::vec3 color;
+};
+
 // A live, typed knob (UI slider, CLI --param name=value).
 struct Parameter {
     std::string name;
@@ -70,6 +76,7 @@ public:
     virtual void bindLookup(const gl::Program& lighting) const = 0;
     virtual std::size_t memoryBytes() const = 0;
     virtual std::vector<DebugView> debugViews() const { return {}; }
+    virtual std::vector<DebugLine> debugLines() const { return {}; }
     virtual std::vector<Parameter> parameters() { return {}; }
 };
 

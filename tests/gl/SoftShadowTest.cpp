@@ -33,7 +33,8 @@ const std::map<std::string, double> kMeasuredWrongPercent = {
     {"pcf-jitter", 1.008},    {"pcf-dither", 1.052},    {"pcf-rotated", 1.045},   {"pcf-adaptive", 1.026},
     {"pcss", 0.696},          {"distance", 1.059},      {"vsm", 1.131},           {"esm", 1.598},
     {"evsm2", 1.054},         {"evsm4", 1.045},         {"msm", 1.064},           {"cssm1", 0.912},
-    {"cssm2", 0.908},         {"cascaded", 1.084},
+    {"cssm2", 0.908},         {"cascaded", 1.084},      {"lispsm", 1.084},        {"lispsm-tiled", 1.084},
+    {"psm", 1.084},           {"shadow-volumes", 1.088}, {"planar", 1.084},
 };
 
 TEST(SoftShadows, EveryTechniqueAgainstTheAreaLightReference) {

@@ -4,6 +4,8 @@
 // pixel.
 #include "GlTestSupport.h"
 #include "reference/Comparison.h"
+#include "render/Offscreen.h"
+#include "shadows/cascaded/CascadedShadowMap.h"
 
 #include <cmath>
 #include <cstdio>
@@ -64,6 +66,35 @@ TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
                 }
             }
     std::printf("sweep of %d technique/camera/sun cases: at most %d pixels away from shadow edges differ\n", cases, worst);
+}
+
+// SDSM: a wall 20 m ahead hides the rest of a 1 km view; the cascades then split [first
+// visible, last visible] instead of [near, far], and the first cascade's texels shrink.
+TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 1.7, 0], "target": [0, 1.5, -20], "fov_deg": 60, "near": 0.1, "far": 1000 },
+      "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [100, 1000], "position": [0, 0, -480] },
+                   { "shape": "box", "size": [60, 30, 1], "position": [0, 15, -20.5] } ] })");
+    auto cascadesWith = [&](float sdsm) {
+        render::RenderOptions options;
+        options.technique = "cascaded";
+        options.parameters = {{"sdsm", sdsm}};
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(160, 90);
+        renderer.render(0.0f, s.camera, 160, 90, target.framebuffer());
+        return dynamic_cast<const shadows::CascadedShadowMap&>(renderer.technique()).cascades();
+    };
+    const auto plain = cascadesWith(0.0f), sdsm = cascadesWith(1.0f);
+    ASSERT_EQ(plain.size(), 4u);
+    ASSERT_EQ(sdsm.size(), 4u);
+    std::printf("last split: %.1f m plain, %.1f m SDSM; first cascade texel %.4f m plain, %.4f m SDSM\n", plain.back().splitFar,
+                sdsm.back().splitFar, plain.front().texelWorld, sdsm.front().texelWorld);
+    EXPECT_FLOAT_EQ(plain.back().splitFar, 1000.0f);
+    // The farthest visible depth (along the view axis) is the wall's face, 20 m ahead.
+    EXPECT_GT(sdsm.back().splitFar, 19.9f);
+    EXPECT_LT(sdsm.back().splitFar, 21.0f);
+    EXPECT_LT(sdsm.front().texelWorld, 0.5f * plain.front().texelWorld);
 }
 
 }  // namespace

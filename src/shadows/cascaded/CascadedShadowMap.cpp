@@ -4,6 +4,7 @@
 #include "render/Bindings.h"
 
 #include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
 
 namespace penumbra::shadows {
@@ -12,7 +13,8 @@ std::vector<Parameter> CascadedShadowMap::parameters() {
     return {{"cascades", &count_, 1, 8},           {"lambda", &lambda_, 0, 1},
             {"stabilize", &stabilize_, 0, 1},      {"blend", &blend_, 0, 0.5f},
             {"select_by_projection", &select_, 0, 1}, {"debug_tint", &debugTint_, 0, 1},
-            {"freeze", &freeze_, 0, 1},            {"max_distance", &maxDistance_, 0, 100000}};
+            {"freeze", &freeze_, 0, 1},            {"max_distance", &maxDistance_, 0, 100000},
+            {"sdsm", &sdsm_, 0, 1},                {"draw_frusta", &drawFrusta_, 0, 1}};
 }
 
 void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
@@ -32,12 +34,20 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     const scene::Camera& cam = *frame.camera;
     if (freeze_ < 0.5f || static_cast<int>(fitted_.size()) != count || fittedResolution_ != res) {
         fittedResolution_ = res;
-        const float far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
-        splits_ = cascadeSplits(cam.near, far, count, lambda_);
+        float near = cam.near, far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
+        if (sdsm_ > 0.5f && frame.drawSurfaces)
+            if (const auto bounds = depthBounds_.measure(frame)) {  // SDSM: split only what is visible
+                near = std::max(near, bounds->first * 0.99f);
+                far = std::max(std::min(far, bounds->second * 1.01f), near * 1.01f);
+            }
+        splits_ = cascadeSplits(near, far, count, lambda_);
         fitted_.clear();
-        for (int c = 0; c < count; ++c)
-            fitted_.push_back(fitCascade(sun, cam, frame.aspect, splits_[static_cast<std::size_t>(c)],
-                                         splits_[static_cast<std::size_t>(c) + 1], frame.sceneBounds, res, stabilize_ > 0.5f));
+        slices_.clear();
+        for (int c = 0; c < count; ++c) {
+            const float a = splits_[static_cast<std::size_t>(c)], b = splits_[static_cast<std::size_t>(c) + 1];
+            fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_ > 0.5f));
+            slices_.push_back(frustumCorners(glm::perspective(glm::radians(cam.fovDeg), frame.aspect, a, b) * cam.view()));
+        }
         cameraView_ = cam.view();
     }
     gl::DebugGroup group("cascades");
@@ -68,6 +78,29 @@ void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {
     lighting.set("uCascadeDebug", debugTint_ > 0.5f ? 1 : 0);
 }
 
-std::vector<DebugView> CascadedShadowMap::debugViews() const { return maps_.debugViews(); }
+std::vector<DebugView> CascadedShadowMap::debugViews() const {
+    auto views = maps_.debugViews();
+    if (!cascades_.empty()) views.insert(views.begin(), cascades_.debugView("cascade 0", 0));
+    return views;
+}
+
+static void appendBox(std::vector<DebugLine>& lines, const std::array<glm::vec3, 8>& c, const glm::vec3& color) {
+    for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1)
+            if (!(i & bit)) lines.push_back({c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(i | bit)], color});
+}
+
+// Each cascade's slice of the camera frustum and its light-space box, in the cascade's tint:
+// freeze the cascades and fly away to see how they cover the view.
+std::vector<DebugLine> CascadedShadowMap::debugLines() const {
+    std::vector<DebugLine> lines;
+    if (drawFrusta_ < 0.5f) return lines;
+    static const glm::vec3 kTints[4] = {{1.0f, 0.3f, 0.3f}, {0.3f, 1.0f, 0.3f}, {0.3f, 0.3f, 1.0f}, {1.0f, 1.0f, 0.3f}};
+    for (std::size_t c = 0; c < fitted_.size() && c < slices_.size(); ++c) {
+        appendBox(lines, slices_[c], kTints[c % 4]);
+        appendBox(lines, frustumCorners(fitted_[c].viewProj), kTints[c % 4] * 0.5f);
+    }
+    return lines;
+}
 
 }  // namespace penumbra::shadows

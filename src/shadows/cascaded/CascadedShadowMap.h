@@ -1,6 +1,7 @@
 #pragma once
 #include "shadows/ShadowTechnique.h"
 #include "shadows/cascaded/CascadeFit.h"
+#include "shadows/cascaded/DepthBounds.h"
 #include "shadows/common/DepthAndTintMaps.h"
 #include "shadows/common/LayeredDepthMap.h"
 
@@ -18,16 +19,19 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + cascades_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override;
+    std::vector<DebugLine> debugLines() const override;
     std::vector<Parameter> parameters() override;
     const std::vector<Cascade>& cascades() const { return fitted_; }
 
 private:
     float count_ = 4, lambda_ = 0.75f, stabilize_ = 1, blend_ = 0.1f, select_ = 0, debugTint_ = 0, freeze_ = 0,
-          maxDistance_ = 0;
+          maxDistance_ = 0, sdsm_ = 0, drawFrusta_ = 1;
     int light_ = -1, fittedResolution_ = 0;
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;
     std::vector<Cascade> fitted_;
+    std::vector<std::array<glm::vec3, 8>> slices_;  // camera frustum slice of each cascade, for the debug lines
+    DepthBounds depthBounds_;
     LayeredDepthMap cascades_;
     DepthAndTintMaps maps_;
 };
