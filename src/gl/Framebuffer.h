@@ -18,6 +18,9 @@ public:
     // Throws std::runtime_error naming `what` when the framebuffer is incomplete.
     void checkComplete(const std::string& what) const;
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
+    // Binds, sets the viewport, clears depth to 1 and enables writing depth test GL_LESS: the
+    // start of every depth-only pass (shadow maps, camera pre-passes).
+    void beginDepthPass(int width, int height) const;
     GLuint id() const { return object_.id(); }
 
 private:

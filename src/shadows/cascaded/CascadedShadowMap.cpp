@@ -20,13 +20,7 @@ std::vector<Parameter> CascadedShadowMap::parameters() {
 void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // other lights, and every light's coloured tint
     const auto& lights = *frame.lights;
-    const std::vector<int> slots = DepthAndTintMaps::slots(lights);
-    light_ = -1;
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        if (lights[i].type == scene::Light::Type::Directional && slots[i] >= 0) {
-            light_ = static_cast<int>(i);
-            break;
-        }
+    light_ = DepthAndTintMaps::firstShadowedSun(lights);
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
     const int count = std::clamp(static_cast<int>(std::lround(count_)), 1, 8);

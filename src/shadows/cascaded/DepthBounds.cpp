@@ -22,13 +22,7 @@ std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& f
     }
     const scene::Camera& cam = *frame.camera;
     gl::unbindTextureUnits();
-    target_.bind();
-    glViewport(0, 0, size.x, size.y);
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    target_.beginDepthPass(size.x, size.y);
     program_.set("uLightViewProj", cam.projection(frame.aspect) * cam.view());
     frame.drawSurfaces(program_, -1);
     std::vector<float> depth(static_cast<std::size_t>(size.x) * size.y);

@@ -27,6 +27,13 @@ std::vector<int> DepthAndTintMaps::slots(const std::vector<Light>& lights) {
     return out;
 }
 
+int DepthAndTintMaps::firstShadowedSun(const std::vector<Light>& lights) {
+    const std::vector<int> slot = slots(lights);
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].type == Light::Type::Directional && slot[i] >= 0) return static_cast<int>(i);
+    return -1;
+}
+
 void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     if (maps_.size() <= i) maps_.resize(i + 1);
     LightMaps& m = maps_[i];

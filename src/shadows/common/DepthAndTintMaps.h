@@ -33,6 +33,8 @@ public:
     void bind(bool rawDepth = false) const;
     // Shadow slot per light (-1: none) in the order the renderer gives lights; also in the light UBO.
     static std::vector<int> slots(const std::vector<scene::Light>& lights);
+    // The directional light view-dependent techniques (cascades, LiSPSM, PSM) take over; -1: none.
+    static int firstShadowedSun(const std::vector<scene::Light>& lights);
     std::size_t memoryBytes() const;
     std::vector<DebugView> debugViews() const;
     void setFiltering(GLenum filter);  // GL_NEAREST (hard) or GL_LINEAR (hardware 2x2 PCF)

@@ -30,13 +30,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
     std::vector<glm::vec4> planes(clipPlanes);
     planes.resize(static_cast<std::size_t>(count), glm::vec4(0, 0, 0, 1));  // w = 1: keep everything
     gl::unbindTextureUnits();  // see DepthAndTintMaps::render
-    target_.bind();
-    glViewport(0, 0, res, res);
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    target_.beginDepthPass(res, res);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glEnable(GL_CLIP_DISTANCE0);
     glPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);

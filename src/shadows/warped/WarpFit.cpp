@@ -64,10 +64,14 @@ struct Body {
     glm::vec3 axis;
 };
 
-bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const scene::Bounds& scene, Body& body) {
-    body.visible = clipFrustumToBox(cameraViewProj, scene);
+bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, Body& body) {
+    if (scene.objects.empty()) body.visible = clipFrustumToBox(cameraViewProj, scene.bounds);
+    for (const auto& box : scene.objects) {
+        const auto part = clipFrustumToBox(cameraViewProj, box);
+        body.visible.insert(body.visible.end(), part.begin(), part.end());
+    }
     if (body.visible.empty()) return false;
-    body.casters = extrudeTowardLight(body.visible, -glm::normalize(sun.direction), scene);
+    body.casters = extrudeTowardLight(body.visible, -glm::normalize(sun.direction), scene.bounds);
     body.axis = frustumAxis(cameraViewProj);
     return true;
 }
@@ -128,7 +132,7 @@ glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, in
 }
 
 WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
-                     const scene::Bounds& scene, const LispsmOptions& options) {
+                     const WarpScene& scene, const LispsmOptions& options) {
     WarpedView w;
     Body body;
     if (!makeBody(sun, cameraViewProj, scene, body)) return w;
@@ -147,6 +151,7 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
     float nearDist = std::numeric_limits<float>::max();
     for (const auto& p : body.visible) nearDist = std::min(nearDist, glm::dot(p - camera.position, body.axis));
     nearDist = std::max(nearDist, camera.near);
+    if (options.nearFromCamera) nearDist = camera.near;
     const float depth = std::max(ls.max.y - ls.min.y, 1e-4f);
     const float zn = nearDist / w.sinGamma, zf = zn + depth * w.sinGamma;
     w.n = options.nScale * (zn + std::sqrt(zf * zn)) / w.sinGamma;
@@ -171,7 +176,7 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
 }
 
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
-                  const scene::Bounds& scene, float minNear) {
+                  const WarpScene& scene, float minNear) {
     WarpedView w;
     Body body;
     if (!makeBody(sun, cameraViewProj, scene, body)) return w;

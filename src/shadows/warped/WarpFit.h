@@ -17,6 +17,16 @@
 
 namespace penumbra::shadows {
 
+// Where the scene is: its bounds (casters reach to their edge) and, when known, each object's
+// bounds, so the body hugs what is there rather than the air in the scene's box (a tall tower
+// far away must not make the body start at the camera).
+struct WarpScene {
+    scene::Bounds bounds;
+    std::vector<scene::Bounds> objects;  // empty: the body is the frustum ∩ `bounds`
+    WarpScene() = default;
+    WarpScene(const scene::Bounds& b) : bounds(b) {}  // NOLINT: a box is a scene of one box
+};
+
 struct WarpedView {
     glm::mat4 viewProj{1.0f};      // world -> clip of the shadow map
     glm::mat4 shadowMatrix{1.0f};  // world -> [0,1]^3 texture space (after the divide by w)
@@ -45,16 +55,17 @@ glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, in
 struct LispsmOptions {
     float nScale = 1.0f;          // multiplies n_opt (1: Wimmer's optimum)
     float minSinGamma = 0.05f;    // below this the warp degenerates: plain orthographic fit
+    bool nearFromCamera = false;  // z_n: the camera's near plane instead of the body's nearest point
 };
 
 // LiSPSM for the (sub-)frustum `cameraViewProj` seen from `camera`.
 WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
-                     const scene::Bounds& scene, const LispsmOptions& options = {});
+                     const WarpScene& scene, const LispsmOptions& options = {});
 
 // PSM for the same. `minNear` bounds the virtual camera's near plane from below, as a share of
 // the body's depth: the slide-back that keeps every caster in front of the virtual camera.
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
-                  const scene::Bounds& scene, float minNear = 0.02f);
+                  const WarpScene& scene, float minNear = 0.02f);
 
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
 // perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.

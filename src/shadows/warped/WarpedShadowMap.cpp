@@ -16,6 +16,7 @@ std::vector<Parameter> WarpedShadowMap::parameters() {
     if (warp_ == Warp::Lispsm) {
         p.push_back({"n_scale", &nScale_, 0.05f, 20.0f});
         p.push_back({"min_sin_gamma", &minSinGamma_, 0.0f, 1.0f});
+        p.push_back({"near_from_camera", &nearFromCamera_, 0, 1});
     } else {
         p.push_back({"min_near", &psmMinNear_, 0.001f, 1.0f});
     }
@@ -27,13 +28,7 @@ std::vector<Parameter> WarpedShadowMap::parameters() {
 void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // other lights, and every light's coloured tint
     const auto& lights = *frame.lights;
-    const std::vector<int> slots = DepthAndTintMaps::slots(lights);
-    light_ = -1;
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        if (lights[i].type == scene::Light::Type::Directional && slots[i] >= 0) {
-            light_ = static_cast<int>(i);
-            break;
-        }
+    light_ = DepthAndTintMaps::firstShadowedSun(lights);
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
     const scene::Camera& cam = *frame.camera;
@@ -45,13 +40,17 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
         const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
                                                 0.5f * glm::length(frame.sceneBounds.extent()));
         const float reach = std::max(far, cam.near * 2.0f);
+        WarpScene where(frame.sceneBounds);
+        if (frame.scene)
+            for (const auto& obj : frame.scene->objects)
+                where.objects.push_back(frame.scene->meshes[static_cast<std::size_t>(obj.mesh)].bounds.transformed(obj.transformAt(frame.time)));
         views_.clear();
         for (int r = 0; r < grid.y; ++r)
             for (int c = 0; c < grid.x; ++c) {
                 const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
                 WarpedView v = warp_ == Warp::Lispsm
-                                   ? fitLispsm(sun, cam, tile, frame.sceneBounds, {nScale_, minSinGamma_})
-                                   : fitPsm(sun, cam, tile, frame.sceneBounds, psmMinNear_);
+                                   ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_ > 0.5f})
+                                   : fitPsm(sun, cam, tile, where, psmMinNear_);
                 if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
                     v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
                     v.shadowMatrix = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].shadowMatrix;

@@ -26,7 +26,8 @@ public:
 private:
     std::string name_;
     Warp warp_;
-    float cols_, rows_, nScale_ = 1.0f, minSinGamma_ = 0.05f, psmMinNear_ = 0.02f, debugTint_ = 0, freeze_ = 0;
+    float cols_, rows_, nScale_ = 1.0f, minSinGamma_ = 0.05f, psmMinNear_ = 0.02f, debugTint_ = 0, freeze_ = 0,
+          nearFromCamera_ = 1;
     int light_ = -1, resolution_ = 0;
     glm::ivec2 grid_{1, 1};
     glm::mat4 cameraViewProj_{1.0f};
