@@ -66,7 +66,12 @@ struct Body {
 
 bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, Body& body) {
     if (scene.objects.empty()) body.visible = clipFrustumToBox(cameraViewProj, scene.bounds);
-    for (const auto& box : scene.objects) {
+    // Flat objects (a ground plane) have boxes of zero thickness, which clipping would whittle
+    // down to nothing in rounding: every box gets a margin of a thousandth of the scene.
+    const glm::vec3 margin(1e-3f * glm::length(scene.bounds.extent()));
+    for (scene::Bounds box : scene.objects) {
+        box.min -= margin;
+        box.max += margin;
         const auto part = clipFrustumToBox(cameraViewProj, box);
         body.visible.insert(body.visible.end(), part.begin(), part.end());
     }
