@@ -9,7 +9,7 @@ using scene::Light;
 
 const glm::mat4 kClipToTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
 
-static glm::vec3 anyPerpendicular(const glm::vec3& d) {
+glm::vec3 anyPerpendicular(const glm::vec3& d) {
     return std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
 }
 

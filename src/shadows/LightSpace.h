@@ -33,6 +33,9 @@ LightSpace computeLightSpace(const scene::Light& light, int resolution, const sc
 // Maps clip space [-1,1]^3 to texture space [0,1]^3.
 extern const glm::mat4 kClipToTexture;
 
+// A unit axis not parallel to `d` (the up vector of a view along d).
+glm::vec3 anyPerpendicular(const glm::vec3& d);
+
 // World-space corners of the clip volume of `viewProj` (bit 0: x, 1: y, 2: z; set = +1).
 std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj);
 

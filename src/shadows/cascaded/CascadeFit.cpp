@@ -25,10 +25,9 @@ std::vector<float> cascadeSplits(float n, float f, int m, float lambda) {
 Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear, float splitFar,
                    const scene::Bounds& sceneBounds, int res, bool stabilize) {
     const glm::vec3 dir = light.direction;
-    const glm::vec3 up = std::abs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     // A light view through the world origin: only its orientation matters; positions are
     // expressed in it so that texel snapping is relative to a fixed grid.
-    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, up);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, anyPerpendicular(dir));
     const auto corners = frustumCorners(glm::perspective(glm::radians(camera.fovDeg), aspect, splitNear, splitFar) * camera.view());
 
     glm::vec2 lo, hi;

@@ -74,7 +74,7 @@ void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {
 
 std::vector<DebugView> CascadedShadowMap::debugViews() const {
     auto views = maps_.debugViews();
-    if (!cascades_.empty()) views.insert(views.begin(), cascades_.debugView("cascade 0", 0));
+    if (!cascades_.empty()) views.insert(views.begin(), cascades_.debugView("cascade 0"));
     return views;
 }
 

@@ -136,11 +136,15 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
     }
 }
 
+GLuint DepthAndTintMaps::rawUnit(std::size_t light) const {
+    return (cube_[light] ? render::kUnitRawCube : render::kUnitRaw2D) + static_cast<GLuint>(slots_[light]);
+}
+
 void DepthAndTintMaps::bind(bool rawDepth) const {
     for (std::size_t i = 0; i < slots_.size() && i < maps_.size(); ++i) {
         if (slots_[i] < 0 || maps_[i].depth.id() == 0) continue;
         const auto slot = static_cast<GLuint>(slots_[i]);
-        const GLuint raw = (cube_[i] ? render::kUnitRawCube : render::kUnitRaw2D) + slot;
+        const GLuint raw = rawUnit(i);
         maps_[i].depth.bind((cube_[i] ? render::kUnitShadowCube : render::kUnitShadow2D) + slot);
         maps_[i].tint.bind((cube_[i] ? render::kUnitTintCube : render::kUnitTint2D) + slot);
         if (rawDepth) {

@@ -41,6 +41,8 @@ public:
 
     std::size_t lightCount() const { return slots_.size(); }
     int slot(std::size_t light) const { return slots_[light]; }
+    // The unit where light `light`'s raw depth, or a technique's own map in its place, is bound.
+    GLuint rawUnit(std::size_t light) const;
     const LightMaps& maps(std::size_t light) const { return maps_[light]; }
     const gl::Program& depthProgram() const { return depthProgram_; }  // opaque casters -> depth
 

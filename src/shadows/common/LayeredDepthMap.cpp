@@ -42,7 +42,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-DebugView LayeredDepthMap::debugView(const std::string& label, int) const {
+DebugView LayeredDepthMap::debugView(const std::string& label) const {
     return {label, view_.id(), GL_TEXTURE_2D, true, 0};
 }
 

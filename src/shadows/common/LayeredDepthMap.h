@@ -24,7 +24,7 @@ public:
     bool empty() const { return texture_.id() == 0; }
     int layers() const { return layers_; }
     std::size_t memoryBytes() const { return texture_.memoryBytes(); }
-    DebugView debugView(const std::string& label, int layer) const;
+    DebugView debugView(const std::string& label) const;  // layer 0
 
 private:
     gl::Texture texture_;

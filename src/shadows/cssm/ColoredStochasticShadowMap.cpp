@@ -106,8 +106,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     depth_.bind();
     for (std::size_t i = 0; i < depth_.lightCount() && i < maps_.size(); ++i) {
         if (depth_.slot(i) < 0 || !maps_[i].colour.id()) continue;
-        const GLuint unit = (maps_[i].cube ? render::kUnitRawCube : render::kUnitRaw2D) + static_cast<GLuint>(depth_.slot(i));
-        maps_[i].colour.bind(unit);
+        maps_[i].colour.bind(depth_.rawUnit(i));
     }
     lighting.set("uFilter", std::clamp(static_cast<int>(std::lround(filter_)), 0, 4));
     lighting.set("uRadiusTexels", radiusTexels_);

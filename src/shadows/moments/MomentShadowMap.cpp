@@ -159,8 +159,7 @@ void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
     for (std::size_t i = 0; i < maps_.lightCount() && i < moments_.size(); ++i) {
         if (maps_.slot(i) < 0 || !moments_[i].moments.id()) continue;
-        const GLuint unit = (moments_[i].cube ? render::kUnitRawCube : render::kUnitRaw2D) + static_cast<GLuint>(maps_.slot(i));
-        moments_[i].moments.bind(unit);
+        moments_[i].moments.bind(maps_.rawUnit(i));
     }
     lighting.set("uWarp", static_cast<int>(warp_));
     lighting.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));

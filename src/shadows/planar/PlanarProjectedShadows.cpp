@@ -7,7 +7,6 @@
 namespace penumbra::shadows {
 
 PlanarProjectedShadows::PlanarProjectedShadows() {
-    receiverMask_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/shadow_depth.frag"});
     flattened_ = gl::Program::build({.vertex = "src/shadows/planar/planar.vert", .fragment = "src/shadows/planar/planar.frag"});
 }
 
@@ -36,8 +35,9 @@ void PlanarProjectedShadows::renderMaps(const ShadowFrame& frame) {
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             glStencilFunc(GL_ALWAYS, 1, 0xff);
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-            receiverMask_.set("uLightViewProj", mask_.viewProj());
-            frame.drawSurfaces(receiverMask_, receiver_->object);
+            const gl::Program& surfaces = maps_.depthProgram();  // plain positions; the light's matrix swapped for the camera's
+            surfaces.set("uLightViewProj", mask_.viewProj());
+            frame.drawSurfaces(surfaces, receiver_->object);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         flattenCasters(frame, lights[i]);

@@ -28,7 +28,7 @@ private:
     void flattenCasters(const ShadowFrame& frame, const scene::Light& light);
     float receiverObject_ = -1, clipToReceiver_ = 1, stencilOnce_ = 1, naive_ = 0, opacity_ = 1;
     std::optional<ReceiverPlane> receiver_;
-    gl::Program receiverMask_, flattened_;
+    gl::Program flattened_;
     ScreenShadowMask mask_;
     DepthAndTintMaps maps_;
 };

@@ -38,10 +38,6 @@ glm::vec3 frustumAxis(const glm::mat4& viewProj) {
     return glm::normalize(unproject(inv, {0, 0, 1}) - unproject(inv, {0, 0, -1}));
 }
 
-glm::vec3 perpendicularTo(const glm::vec3& d) {
-    return std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-}
-
 scene::Bounds boundsOf(const std::vector<glm::vec3>& points, const glm::mat4& m, bool divide) {
     scene::Bounds b;
     for (const auto& p : points) {
@@ -146,7 +142,7 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
     w.sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
     w.uniform = w.sinGamma < options.minSinGamma;
     // Light space: looking along the light, +y the view axis projected onto the map's plane.
-    const glm::vec3 up = w.uniform ? perpendicularTo(d) : glm::normalize(body.axis - cosGamma * d);
+    const glm::vec3 up = w.uniform ? anyPerpendicular(d) : glm::normalize(body.axis - cosGamma * d);
     const glm::mat4 lightView = glm::lookAt(camera.position, camera.position + d, up);
     if (w.uniform) return finish(w, orthoAround(boundsOf(body.casters, lightView, false)) * lightView);
 
@@ -203,7 +199,7 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const gl
     const float slide = std::max(0.0f, nearTarget - casterNear);
     const glm::vec3 eye = camera.position - v * slide;
     const float nearV = std::max(casterNear + slide, nearTarget), farV = std::max(casterFar + slide, nearV * 1.01f);
-    const glm::vec3 camUp = std::abs(glm::dot(camera.up, v)) < 0.99f ? camera.up : perpendicularTo(v);
+    const glm::vec3 camUp = std::abs(glm::dot(camera.up, v)) < 0.99f ? camera.up : anyPerpendicular(v);
     const glm::mat4 pp = glm::perspective(glm::radians(90.0f), 1.0f, nearV, farV) * glm::lookAt(eye, eye + v, camUp);
     w.clipPlane = glm::vec4(v, -glm::dot(v, eye) - 0.5f * nearV);  // in front of the virtual near plane / 2
 
@@ -219,7 +215,7 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const gl
     const glm::vec3 centre = qb.center();
     if (std::abs(light.w) < 1e-3f * glm::length(glm::vec3(light))) {  // parallel to the image plane
         const glm::vec3 dir = glm::normalize(glm::vec3(light));
-        const glm::mat4 view = glm::lookAt(centre + dir, centre, perpendicularTo(dir));
+        const glm::mat4 view = glm::lookAt(centre + dir, centre, anyPerpendicular(dir));
         return finish(w, orthoAround(boundsOf(q, view, false)) * view * pp);
     }
     w.pointInPostPerspective = true;
@@ -234,7 +230,7 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const gl
             axis = glm::vec3(0.0f, 0.0f, -1.0f);
             break;
         }
-    const glm::mat4 view = glm::lookAt(lp, lp + axis, perpendicularTo(axis));
+    const glm::mat4 view = glm::lookAt(lp, lp + axis, anyPerpendicular(axis));
     float dmin = std::numeric_limits<float>::max(), dmax = 0.0f;
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     for (const auto& p : q) {
@@ -260,7 +256,7 @@ float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& 
     const glm::vec4 h = s * glm::vec4(P, 1.0f);
     const glm::vec2 uv = glm::vec2(h) / h.w;
     const glm::vec3 d = glm::normalize(lightDirection);
-    const glm::vec3 e1 = glm::normalize(glm::cross(d, perpendicularTo(d))), e2 = glm::cross(d, e1);
+    const glm::vec3 e1 = glm::normalize(glm::cross(d, anyPerpendicular(d))), e2 = glm::cross(d, e1);
     float gain = std::numeric_limits<float>::max();
     for (const glm::vec3& e : {e1, e2}) {
         // d(uv)/dP · e = (S_xy e - uv S_w e) / w

@@ -87,7 +87,7 @@ void WarpedShadowMap::bindLookup(const gl::Program& lighting) const {
 
 std::vector<DebugView> WarpedShadowMap::debugViews() const {
     auto views = maps_.debugViews();
-    if (!warped_.empty()) views.insert(views.begin(), warped_.debugView(name_ + " tile 0", 0));
+    if (!warped_.empty()) views.insert(views.begin(), warped_.debugView(name_ + " tile 0"));
     return views;
 }
 
