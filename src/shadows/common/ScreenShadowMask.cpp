@@ -31,6 +31,8 @@ void ScreenShadowMask::begin(const ShadowFrame& frame) {
             fb.checkComplete("screen shadow mask");
             layers_.push_back(std::move(fb));
             layerViews_.push_back(gl::Texture::view2D(mask_, GL_R8, i));
+            const GLint grey[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};  // the overlay shows visibility as grey, not red
+            glTextureParameteriv(layerViews_.back().id(), GL_TEXTURE_SWIZZLE_RGBA, grey);
         }
     }
     const scene::Camera& cam = *frame.camera;
