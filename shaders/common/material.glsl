@@ -1,7 +1,7 @@
 // Material uniforms shared by every pass that draws scene surfaces.
-#include "bindings.glsl"
+#include "src/gpu/ShaderContract.h"
 
-layout(binding = UNIT_DIFFUSE) uniform sampler2D uDiffuseTexture;
+layout(binding = kUnitDiffuse) uniform sampler2D uDiffuseTexture;
 uniform int uHasTexture;
 uniform vec3 uDiffuse;
 uniform vec3 uSpecular;

@@ -1,10 +1,12 @@
 // Per-fragment random numbers for stochastic shadow maps (seed 000 §5.1: speed and artifacts
 // depend on the generator). Seeded by the fragment's light-space position *and depth*, so that
 // stacked layers decorrelate and the result does not depend on draw order, plus a per-frame value.
-//   0: PCG-style integer hash (Jarzynski & Olano 2020's recommendation for GPU hashing)
-//   1: the classic fract(sin(dot(p, k)) * 43758.5453): cheap, but float precision makes it
+//   kRandomPcg: PCG-style integer hash (Jarzynski & Olano 2020's recommendation for GPU hashing)
+//   kRandomSinFract: the classic fract(sin(dot(p, k)) * 43758.5453): cheap, but float precision makes it
 //      repeat and band for large arguments
-uniform int uRandomGenerator;
+#include "src/gpu/ShaderContract.h"
+
+uniform int uRandomGenerator;  // kRandom*
 uniform int uFrameSeed;  // frame counter (non-negative)
 
 uint pcgHash(uint v) {
@@ -16,7 +18,7 @@ uint pcgHash(uint v) {
 // Uniform in [0, 1), `stream` selects an independent sequence (e.g. one per colour channel).
 float fragmentRandom(uint stream) {
     uvec3 p = uvec3(gl_FragCoord.xy, floatBitsToUint(gl_FragCoord.z));
-    if (uRandomGenerator == 1) {
+    if (uRandomGenerator == kRandomSinFract) {
         vec3 q = vec3(gl_FragCoord.xy, gl_FragCoord.z * 4096.0) + float(stream) * 17.0 + float(uFrameSeed % 1024) * 0.37;
         return fract(sin(dot(q, vec3(12.9898, 78.233, 37.719))) * 43758.5453);
     }

@@ -12,7 +12,7 @@ in VertexOut {
     vec2 uv;
 } vIn;
 
-layout(binding = UNIT_PROJECTOR) uniform sampler2D uProjectorImage[MAX_PROJECTORS];
+layout(binding = kUnitProjector) uniform sampler2D uProjectorImage[kMaxProjectors];
 uniform vec3 uCameraPos;
 uniform vec3 uAmbient;
 uniform int uTranslucentPass;  // 1: dual-source output of transmittance for blending
@@ -34,7 +34,7 @@ layout(location = 1) out vec4 outFrontColour;
 layout(location = 2) out vec4 outFrontTransmit;
 layout(location = 3) out vec4 outBackColour;
 layout(location = 4) out vec4 outBackTransmit;
-layout(binding = 28) uniform sampler2D uDualDepth;  // previous pass: (-nearest, farthest)
+layout(binding = kUnitDualDepth) uniform sampler2D uDualDepth;  // previous pass: (-nearest, farthest)
 #elif defined(TRANSLUCENT_WEIGHTED) || defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_STOCHASTIC_DEPTH)
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outTransmit;
@@ -43,15 +43,15 @@ layout(location = 0, index = 0) out vec4 outColor;
 layout(location = 0, index = 1) out vec4 outTransmit;
 #endif
 #ifdef TRANSLUCENT_PEEL
-layout(binding = 30) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
+layout(binding = kUnitPeelDepth) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
 #endif
 #if defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_DUAL_PEEL)
-layout(binding = 31) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
+layout(binding = kUnitOpaqueDepth) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
 #endif
 #if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
 #include "../common/random.glsl"
 #define STOCHASTIC_SAMPLES 4
-layout(binding = 29) uniform sampler2DMS uStochasticDepth;  // nearest stochastic surface per sample
+layout(binding = kUnitStochasticDepth) uniform sampler2DMS uStochasticDepth;  // nearest stochastic surface per sample
 #endif
 
 // Constant indices only: llvmpipe (LLVM 15) crashes on dynamically indexed sampler arrays
@@ -65,14 +65,14 @@ vec3 projectorTexel(int slot, vec2 uv) {
 vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
     LightData light = uLights[i];
     int type = lightType(i);
-    if (type == LIGHT_DIRECTIONAL) {
+    if (type == kLightDirectional) {
         L = -light.directionFar.xyz;
         return light.colorType.rgb;
     }
     vec3 toLight = light.positionNear.xyz - P;
     L = normalize(toLight);
-    if (type == LIGHT_POINT) return light.colorType.rgb;
-    if (type == LIGHT_SPOT) {
+    if (type == kLightPoint) return light.colorType.rgb;
+    if (type == kLightSpot) {
         float cosAngle = dot(-L, light.directionFar.xyz);
         return light.colorType.rgb * smoothstep(light.cone.x, light.cone.y, cosAngle);
     }

@@ -4,6 +4,7 @@
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "platform/GlfwWindow.h"
+#include "app/OutputFiles.h"
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
 #include "scene/CameraController.h"
@@ -52,6 +53,26 @@ void moveLight(scene::Light& light, float yaw, float pitch, const glm::vec3& piv
     light.direction = glm::normalize(glm::rotate(light.direction, yaw, glm::vec3(0, 1, 0)));
 }
 
+// A parameter as the widget of its kind: slider, checkbox or combo box; its help as a tooltip.
+void parameterWidget(const shadows::Parameter& p) {
+    using Kind = shadows::Parameter::Kind;
+    switch (p.kind) {
+        case Kind::Real: ImGui::SliderFloat(p.name.c_str(), p.realValue, p.min, p.max); break;
+        case Kind::Integer:
+            ImGui::SliderInt(p.name.c_str(), p.intValue, static_cast<int>(p.min), static_cast<int>(p.max));
+            break;
+        case Kind::Flag: ImGui::Checkbox(p.name.c_str(), p.flagValue); break;
+        case Kind::Choice:
+            if (ImGui::BeginCombo(p.name.c_str(), p.text().c_str())) {
+                for (std::size_t i = 0; i < p.labels.size(); ++i)
+                    if (ImGui::Selectable(p.labels[i].c_str(), static_cast<int>(i) == *p.intValue)) *p.intValue = static_cast<int>(i);
+                ImGui::EndCombo();
+            }
+            break;
+    }
+    if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s (default %s)", p.help.c_str(), p.defaultText.c_str());
+}
+
 void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraController& controller) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
@@ -76,7 +97,7 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     int& res = renderer.options().shadowResolution;
     ImGui::InputInt("shadow res (0: per light)", &res, 256, 1024);
     res = std::clamp(res, 0, 8192);
-    for (const auto& p : renderer.technique().parameters()) ImGui::SliderFloat(p.name.c_str(), p.value, p.min, p.max);
+    for (const auto& p : renderer.technique().parameters()) parameterWidget(p);
 
     int transparency = static_cast<int>(renderer.options().transparency);
     if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0dual-depth-peeling\0weighted\0stochastic\0"))
@@ -122,7 +143,7 @@ void saveScreenshot(const ViewerOptions& opts, ViewerState& state, int w, int h)
     char name[64];
     std::snprintf(name, sizeof name, "screenshot_%03d.png", state.screenshotCount++);
     const auto file = opts.screenshotDir / name;
-    render::writePng(file, w, h, render::readFramebufferRgba8(0, w, h));
+    writePng(file, w, h, render::readFramebufferRgba8(0, w, h));
     std::printf("penumbra: saved %s\n", file.string().c_str());
 }
 
@@ -134,12 +155,7 @@ int runViewer(const ViewerOptions& opts) {
     if (opts.debugContext) gl::enableDebugOutput();
     log::info("window on {}", platform::glDeviceDescription());
 
-    render::RenderOptions ro;
-    ro.technique = !opts.technique.empty() ? opts.technique : (!scene.technique.empty() ? scene.technique : "hard");
-    ro.shadowResolution = opts.shadowResolution;
-    ro.parameters = opts.parameters;
-    ro.transparency = render::transparencyFromString(opts.transparency);
-    render::Renderer renderer(scene, ro);
+    render::Renderer renderer(scene, opts.render);
     scene::CameraController controller(scene.camera);
     if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);
     if (opts.controller == "orbit") controller.setMode(scene::Camera::Controller::Orbit);

@@ -41,9 +41,6 @@ void Framebuffer::beginDepthPass(int width, int height) const {
     glViewport(0, 0, width, height);
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(id(), GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace penumbra::gl

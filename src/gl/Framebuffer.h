@@ -18,8 +18,8 @@ public:
     // Throws std::runtime_error naming `what` when the framebuffer is incomplete.
     void checkComplete(const std::string& what) const;
     void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }
-    // Binds, sets the viewport, clears depth to 1 and enables writing depth test GL_LESS: the
-    // start of every depth-only pass (shadow maps, camera pre-passes).
+    // Binds, sets the viewport and clears depth to 1: the start of every depth-only pass (shadow
+    // maps, camera pre-passes), inside the pass's ScopedPassState (depth writes must be on).
     void beginDepthPass(int width, int height) const;
     GLuint id() const { return object_.id(); }
 

@@ -42,7 +42,7 @@ private:
 
 // Unbinds the first `units` texture units. llvmpipe rasterises into a texture several times slower
 // while last frame's textures stay bound for sampling, so shadow passes start with this.
-void unbindTextureUnits(GLsizei units = 32);
+void unbindTextureUnits(GLsizei units);
 
 // Bytes per texel of the internal formats this project uses (for memory statistics).
 std::size_t bytesPerTexel(GLenum internalFormat);

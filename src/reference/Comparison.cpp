@@ -57,7 +57,7 @@ void Comparison::traceReference(int samples, bool showProgress) {
 }
 
 TechniqueScore Comparison::evaluate(const std::string& technique, int shadowResolution, int timedFrames,
-                                    const std::vector<std::pair<std::string, float>>& parameters) {
+                                    const shadows::ParameterValues& parameters) {
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;

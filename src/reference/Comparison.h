@@ -39,7 +39,7 @@ public:
     // Renders `technique`'s visibility for every light and scores it against the reference;
     // `timedFrames` full frames (after one warm-up; 0: none) measure its GPU cost.
     TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames,
-                            const std::vector<std::pair<std::string, float>>& parameters = {});
+                            const shadows::ParameterValues& parameters = {});
 
     // The frame shaded with the given per-light visibility (the reference's or a technique's):
     // ambient + sum(contribution * visibility), fog, background; RGBA8 sRGB top row first.

@@ -1,6 +1,6 @@
 #include "render/GpuScene.h"
 
-#include "render/Bindings.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <cmath>
@@ -95,7 +95,7 @@ void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t fir
     program.set("uTransmission", m.transmission);
     program.set("uAlphaCutoff", m.alphaCutoff);
     program.set("uHasTexture", m.diffuseTexture >= 0 ? 1 : 0);
-    if (m.diffuseTexture >= 0) images_[static_cast<std::size_t>(m.diffuseTexture)].bind(kUnitDiffuse);
+    if (m.diffuseTexture >= 0) images_[static_cast<std::size_t>(m.diffuseTexture)].bind(gpu::kUnitDiffuse);
     program.use();
     meshes_[d.mesh].vao.bind();
     glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,

@@ -6,16 +6,23 @@ namespace penumbra::render {
 
 using scene::Light;
 
-LightBlock packLights(const std::vector<Light>& lights, const std::vector<shadows::LightSpace>& spaces,
-                      const std::vector<int>& slots) {
-    LightBlock block{};
+static_assert(static_cast<int>(Light::Type::Directional) == gpu::kLightDirectional &&
+                  static_cast<int>(Light::Type::Spot) == gpu::kLightSpot &&
+                  static_cast<int>(Light::Type::Point) == gpu::kLightPoint &&
+                  static_cast<int>(Light::Type::Projector) == gpu::kLightProjector,
+              "light-type codes of gpu/ShaderContract.h follow scene::Light::Type");
+
+gpu::LightBlock packLights(const std::vector<Light>& lights, const std::vector<shadows::LightSpace>& spaces,
+                           const shadows::ShadowSlots& slots) {
+    gpu::LightBlock block{};
     int projectorSlot = 0;
-    const int n = static_cast<int>(std::min<std::size_t>(lights.size(), kMaxLights));
+    const int n = static_cast<int>(std::min<std::size_t>(lights.size(), gpu::kMaxLights));
     block.count.x = n;
     for (int i = 0; i < n; ++i) {
-        const Light& l = lights[static_cast<std::size_t>(i)];
-        const shadows::LightSpace& ls = spaces[static_cast<std::size_t>(i)];
-        GpuLight& g = block.lights[i];
+        const auto index = static_cast<std::size_t>(i);
+        const Light& l = lights[index];
+        const shadows::LightSpace& ls = spaces[index];
+        gpu::LightData& g = block.lights[i];
         g.shadowMatrix = ls.shadowMatrix;
         g.colorType = glm::vec4(l.radiance(), static_cast<float>(l.type));
         g.positionNear = glm::vec4(l.position, ls.near);
@@ -23,8 +30,8 @@ LightBlock packLights(const std::vector<Light>& lights, const std::vector<shadow
         const float halfAngle = glm::radians(l.angleDeg) * 0.5f;
         // Spot lights fade over the outer 10% of the cone; projectors cut at the frame edge.
         g.cone = glm::vec4(std::cos(halfAngle), std::cos(halfAngle * 0.9f),
-                           l.type == Light::Type::Projector && projectorSlot < kMaxProjectors ? projectorSlot++ : -1,
-                           static_cast<std::size_t>(i) < slots.size() ? slots[static_cast<std::size_t>(i)] : -1);
+                           l.type == Light::Type::Projector && projectorSlot < gpu::kMaxProjectors ? projectorSlot++ : -1,
+                           index < slots.size() ? slots.slot[index] : -1);
         g.shadow = glm::vec4(l.shadow.bias, l.shadow.slopeBias, l.shadow.normalOffset, ls.texelScale);
         g.misc = glm::vec4(ls.perspective ? 1.0f : 0.0f, static_cast<float>(ls.resolution), l.size, 0.0f);
     }

@@ -1,32 +1,15 @@
 #pragma once
-// CPU side of the std140 LightBlock in shaders/common/lights.glsl.
-#include "render/Bindings.h"
-#include "scene/Light.h"
-#include "shadows/LightSpace.h"
+// Packs the scene's lights into the std140 light block whose layout gpu/ShaderContract.h
+// defines for C++ and GLSL alike.
+#include "gpu/ShaderContract.h"
+#include "shadows/ShadowTechnique.h"
 
-#include <glm/glm.hpp>
 #include <vector>
 
 namespace penumbra::render {
 
-struct GpuLight {
-    glm::mat4 shadowMatrix;
-    glm::vec4 colorType;
-    glm::vec4 positionNear;
-    glm::vec4 directionFar;
-    glm::vec4 cone;
-    glm::vec4 shadow;
-    glm::vec4 misc;
-};
-
-struct LightBlock {
-    glm::ivec4 count{0};
-    GpuLight lights[kMaxLights];
-};
-static_assert(sizeof(GpuLight) == 160, "std140 layout of LightData");
-
-// Packs lights (with their light spaces and shadow slots) into the uniform block.
-LightBlock packLights(const std::vector<scene::Light>& lights, const std::vector<shadows::LightSpace>& spaces,
-                      const std::vector<int>& shadowSlots);
+// Packs lights (with their light spaces and this frame's shadow slots) into the uniform block.
+gpu::LightBlock packLights(const std::vector<scene::Light>& lights, const std::vector<shadows::LightSpace>& spaces,
+                           const shadows::ShadowSlots& slots);
 
 }  // namespace penumbra::render

@@ -1,9 +1,6 @@
 #include "render/Offscreen.h"
 
-#include <stb_image_write.h>
-
 #include <algorithm>
-#include <stdexcept>
 
 namespace penumbra::render {
 
@@ -27,10 +24,5 @@ std::vector<std::uint8_t> readFramebufferRgba8(GLuint fbo, int width, int height
 }
 
 std::vector<std::uint8_t> OffscreenTarget::readRgba8() const { return readFramebufferRgba8(fbo_.id(), width_, height_); }
-
-void writePng(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgba) {
-    if (!stbi_write_png(file.string().c_str(), width, height, 4, rgba.data(), width * 4))
-        throw std::runtime_error(file.string() + ": cannot write PNG");
-}
 
 }  // namespace penumbra::render

@@ -1,10 +1,9 @@
 #pragma once
-// An RGBA8 colour target for headless frames, and PNG output.
+// An RGBA8 colour target for headless frames, and reading a framebuffer back.
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
 
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 namespace penumbra::render {
@@ -26,8 +25,5 @@ private:
 
 // RGBA8 pixels of framebuffer `fbo` (0: the window), top row first (image order).
 std::vector<std::uint8_t> readFramebufferRgba8(GLuint fbo, int width, int height);
-
-// Throws std::runtime_error naming the file when it cannot be written.
-void writePng(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgba);
 
 }  // namespace penumbra::render

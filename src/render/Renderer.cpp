@@ -1,17 +1,22 @@
 #include "render/Renderer.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 #include "render/LightBlock.h"
-#include "shadows/common/DepthAndTintMaps.h"
 #include "util/Log.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::render {
 
+std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene) {
+    if (!options.technique.empty()) return options.technique;
+    return scene.technique.empty() ? "hard" : scene.technique;
+}
+
 static void configure(shadows::ShadowTechnique& technique, const RenderOptions& options) {
-    const auto unknown = shadows::applyParameters(technique, options.parameters);
+    const auto unknown = shadows::applyParameters(technique.parameters(), options.parameters);
     if (!options.strictParameters || unknown.empty()) return;
     std::string known;
     for (const auto& p : technique.parameters()) known += (known.empty() ? "" : ", ") + p.name;
@@ -26,22 +31,23 @@ static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
 }
 
 Renderer::Renderer(scene::Scene& scene, RenderOptions options)
-    : scene_(scene), options_(std::move(options)), gpu_(scene), lightBlock_(sizeof(LightBlock), nullptr) {
-    if (scene_.lights.size() > static_cast<std::size_t>(kMaxLights))
+    : scene_(scene), options_(std::move(options)), gpu_(scene), lightBlock_(sizeof(gpu::LightBlock), nullptr) {
+    if (scene_.lights.size() > static_cast<std::size_t>(gpu::kMaxLights))
         throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
-                                    std::to_string(kMaxLights) + " are supported");
+                                    std::to_string(gpu::kMaxLights) + " are supported");
     int projectors = 0, shadowed2D = 0, shadowedCube = 0;
     for (const auto& l : scene_.lights) {
         projectors += l.type == scene::Light::Type::Projector;
         if (l.shadow.enabled) (l.type == scene::Light::Type::Point ? shadowedCube : shadowed2D) += 1;
     }
-    if (projectors > kMaxProjectors)
+    if (projectors > gpu::kMaxProjectors)
         throw std::invalid_argument("the scene has " + std::to_string(projectors) + " projectors; at most " +
-                                    std::to_string(kMaxProjectors) + " are supported");
-    if (shadowed2D > kMaxShadow2D || shadowedCube > kMaxShadowCube)
+                                    std::to_string(gpu::kMaxProjectors) + " are supported");
+    if (shadowed2D > gpu::kMaxShadow2D || shadowedCube > gpu::kMaxShadowCube)
         log::warn("{}: {} directional/spot/projector and {} point lights cast shadows; only the first {} and {} will "
                   "(set \"shadow\": {\"enabled\": false} on the others to silence this)",
-                  scene_.source.string(), shadowed2D, shadowedCube, kMaxShadow2D, kMaxShadowCube);
+                  scene_.source.string(), shadowed2D, shadowedCube, gpu::kMaxShadow2D, gpu::kMaxShadowCube);
+    options_.technique = chosenTechnique(options_, scene_);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
     lighting_ = buildLighting(*technique_);
@@ -95,17 +101,21 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     std::vector<shadows::LightSpace> spaces;
     for (const auto& light : scene_.lights)
         spaces.push_back(shadows::computeLightSpace(light, effectiveResolution(light), bounds, camera, aspect));
-    const LightBlock block = packLights(scene_.lights, spaces, shadows::DepthAndTintMaps::slots(scene_.lights));
+    slots_ = shadows::ShadowSlots::assign(scene_.lights);
+    const gpu::LightBlock block = packLights(scene_.lights, spaces, slots_);
     lightBlock_.update(0, sizeof(block), &block);
-    lightBlock_.bindBase(GL_UNIFORM_BUFFER, kLightBlockBinding);
+    lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
 
-    glDisable(GL_CULL_FACE);  // planes and panes are single-sided geometry seen from both sides
+    // Every pass declares its state; between passes GL's initial state holds (no culling:
+    // planes and panes are single-sided geometry seen from both sides).
+    gl::applyPassState({});
     {
         gl::DebugGroup group("shadow maps");
         timers_[0].begin();
         shadows::ShadowFrame frame;
         frame.lights = &scene_.lights;
         frame.lightSpaces = &spaces;
+        frame.slots = &slots_;
         frame.frameIndex = frameIndex_++;
         frame.camera = &camera;
         frame.aspect = aspect;
@@ -183,8 +193,9 @@ void Renderer::drawDebugLines(const scene::Camera& camera, float aspect) {
     lines_.set("uViewProj", camera.projection(aspect) * camera.view());
     lines_.use();
     lineVao_.bind();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    gl::PassState state = gl::PassState::depthOnly();
+    state.depthFunc = GL_LEQUAL;
+    const gl::ScopedPassState scope(state);
     glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(vertices.size() / 2));
 }
 
@@ -198,37 +209,31 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     technique_->bindLookup(program);
     int projector = 0;
     for (const auto& light : scene_.lights)
-        if (light.type == scene::Light::Type::Projector && projector < kMaxProjectors)
-            gpu_.image(light.image).bind(kUnitProjector + static_cast<unsigned>(projector++));
+        if (light.type == scene::Light::Type::Projector && projector < gpu::kMaxProjectors)
+            gpu_.image(light.image).bind(gpu::kUnitProjector + static_cast<unsigned>(projector++));
 }
 
 void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
     prepareLighting(lighting_, translucent, camera, aspect);
-
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    if (translucent) {
-        // dst = src + dst * transmittance (per channel, second fragment output).
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_SRC1_COLOR);
-        glDepthMask(GL_FALSE);
+    gl::PassState state = gl::PassState::depthOnly();
+    state.depthFunc = GL_LEQUAL;
+    if (translucent) {  // dst = src + dst * transmittance (per channel, second fragment output)
+        state.withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ONE, GL_SRC1_COLOR));
+        state.depthWrite = false;
     }
+    const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     for (const Draw& d : draws) {
         if (d.translucent != translucent || !d.visible) continue;
         if (byTriangle) gpu_.drawTrianglesSorted(d, lighting_, camera.position);
         else gpu_.draw(d, lighting_);
     }
-    glDisable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ZERO);  // dual-source factors with several draw buffers are an error
-    glDepthMask(GL_TRUE);
 }
 
 void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
+    const gl::ScopedPassState scope(gl::PassState::fullscreen());
     const bool shaded = options_.output == OutputMode::Shaded;
     resolve_.set("uInvProj", glm::inverse(camera.projection(aspect)));
     resolve_.set("uBackground", scene_.background);
@@ -247,6 +252,7 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
     const int size = std::max(64, std::min(width, height) / 4);
     int x = 8;
     glBindFramebuffer(GL_FRAMEBUFFER, target);
+    const gl::ScopedPassState scope(gl::PassState::fullscreen());
     overlay_.use();
     emptyVao_.bind();
     overlaySampler_.bind(0);

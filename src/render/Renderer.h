@@ -25,19 +25,25 @@ namespace penumbra::render {
 // equals Ambient + sum over lights of Contribution * Visibility.
 enum class OutputMode { Shaded = 0, Visibility = 1, WorldPosition = 2, Normal = 3, Contribution = 4, Ambient = 5 };
 
+// How a frame is rendered: the one set of options every front-end (window, render, compare,
+// bench) fills, through one CLI helper (app/RenderOptionsCli.h).
 struct RenderOptions {
-    std::string technique = "hard";
+    std::string technique;     // "" = the scene's `technique`, else "hard"
     int shadowResolution = 0;  // > 0 overrides every light's own resolution
     bool debugOverlay = false;
     OutputMode output = OutputMode::Shaded;
     int debugLight = 0;  // which light OutputMode::Visibility shows
-    // Technique parameters ("radius_texels" = 3, ...); names a technique lacks are ignored
-    // unless strictParameters is set (then they are an error naming the known ones).
-    std::vector<std::pair<std::string, float>> parameters;
+    // Technique parameters as text ("radius_texels" = "3", "filter" = "cross13",
+    // "stabilize" = "true"); names a technique lacks are ignored unless strictParameters is set
+    // (then they are an error naming the known ones).
+    shadows::ParameterValues parameters;
     bool strictParameters = false;
     TransparencyMode transparency = TransparencyMode::SortedObjects;
     int peelLayers = 4;  // depth peeling: layers kept
 };
+
+// The technique `options` asks for on `scene`: its own, else the scene's, else "hard".
+std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene);
 
 struct PassTimes {
     double shadowMs = 0, opaqueMs = 0, translucentMs = 0, postMs = 0;
@@ -91,6 +97,7 @@ private:
     gl::Texture hdr_, depth_;
     gl::Framebuffer hdrFbo_;
     int targetW_ = 0, targetH_ = 0;
+    shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
     std::array<gl::TimerQuery, 4> timers_;
     PassTimes times_;
     std::uint32_t frameIndex_ = 0;

@@ -1,13 +1,12 @@
 #include "render/Transparency.h"
 
-#include "render/Bindings.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
-#include <stdexcept>
 
 namespace penumbra::render {
 
 namespace {
-constexpr unsigned kUnitDualDepth = 28, kUnitStochasticDepth = 29, kUnitPeelDepth = 30, kUnitOpaqueDepth = 31;  // as in lighting.frag
 constexpr int kStochasticSamples = 4;  // llvmpipe's maximum
 
 gl::Program lightingVariant(const std::filesystem::path& lookup, const char* define) {
@@ -28,14 +27,6 @@ const char* toString(TransparencyMode mode) {
         case TransparencyMode::Stochastic: return "stochastic";
     }
     return "?";
-}
-
-TransparencyMode transparencyFromString(const std::string& name) {
-    for (auto m : {TransparencyMode::SortedObjects, TransparencyMode::SortedTriangles, TransparencyMode::DepthPeeling,
-                   TransparencyMode::DualDepthPeeling, TransparencyMode::WeightedBlended, TransparencyMode::Stochastic})
-        if (name == toString(m)) return m;
-    throw std::invalid_argument("unknown transparency mode '" + name +
-                                "'; known: sorted-objects, sorted-triangles, depth-peeling, weighted");
 }
 
 OrderIndependentTransparency::OrderIndependentTransparency(const std::filesystem::path& lookup)
@@ -114,11 +105,11 @@ void OrderIndependentTransparency::render(TransparencyMode mode, int layers, con
         composite(0, 0, hdr, w, h);
     } else if (mode == TransparencyMode::Stochastic) {
         stochasticDepth(gpu, draws, prepare, opaqueDepth);
-        stochasticDepth_.bind(kUnitStochasticDepth);
-        opaqueDepth.bind(kUnitOpaqueDepth);
+        stochasticDepth_.bind(gpu::kUnitStochasticDepth);
+        opaqueDepth.bind(gpu::kUnitOpaqueDepth);
         weighted(gpu, draws, prepare, opaqueDepth, stochasticAccumProgram_);  // same targets, visibility weights
-        glBindTextureUnit(kUnitStochasticDepth, 0);
-        glBindTextureUnit(kUnitOpaqueDepth, 0);
+        glBindTextureUnit(gpu::kUnitStochasticDepth, 0);
+        glBindTextureUnit(gpu::kUnitOpaqueDepth, 0);
         composite(0, 0, hdr, w, h);
     } else if (mode == TransparencyMode::DualDepthPeeling) {
         const int passes = (layers + 1) / 2;
@@ -135,12 +126,9 @@ void OrderIndependentTransparency::stochasticDepth(const GpuScene& gpu, const st
     stochasticFbo_.bind();
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(stochasticFbo_.id(), GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    const gl::ScopedPassState state(gl::PassState::depthOnly());
     prepare(stochasticDepthProgram_);
-    opaqueDepth.bind(kUnitOpaqueDepth);
+    opaqueDepth.bind(gpu::kUnitOpaqueDepth);
     for (const Draw& d : draws)
         if (d.translucent && d.visible) gpu.draw(d, stochasticDepthProgram_);
 }
@@ -154,54 +142,47 @@ void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vect
     const float zero[4] = {0, 0, 0, 0}, one[4] = {1, 1, 1, 1};
     glClearNamedFramebufferfv(weightedFbo_.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(weightedFbo_.id(), GL_COLOR, 1, one);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunci(0, GL_ONE, GL_ONE);          // Σ C w, Σ a w
-    glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);   // Π T, per channel
+    gl::PassState state = gl::PassState::depthOnly().withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ONE, GL_ONE));  // Σ C w, Σ a w
+    state.bufferBlending = {{1, gl::BlendState::of(GL_FUNC_ADD, GL_ZERO, GL_SRC_COLOR)}};  // Π T, per channel
+    state.depthWrite = false;
+    const gl::ScopedPassState scope(state);
     prepare(program);
     for (const Draw& d : draws)
         if (d.translucent && d.visible) gpu.draw(d, program);
-    glDisable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ZERO);
-    glDepthMask(GL_TRUE);
 }
 
 void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const std::vector<Draw>& draws,
                                         const Prepare& prepare, const gl::Texture& opaqueDepth) {
     prepare(peelProgram_);
-    opaqueDepth.bind(kUnitOpaqueDepth);
+    opaqueDepth.bind(gpu::kUnitOpaqueDepth);
     const float black[4] = {0, 0, 0, 0}, white[4] = {1, 1, 1, 1}, nearDepth = 0.0f, farDepth = 1.0f;
     // "Previous layer" of the first pass: depth 0, so every fragment is behind it.
     glClearTexImage(peelDepth_[1].id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &nearDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    const gl::ScopedPassState state(gl::PassState::depthOnly());
     for (int i = 0; i < layers; ++i) {
         const gl::Framebuffer& fb = peelFbos_[static_cast<std::size_t>(i)];
         fb.bind();
         glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, black);
         glClearNamedFramebufferfv(fb.id(), GL_COLOR, 1, white);
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
-        peelDepth_[(i + 1) % 2].bind(kUnitPeelDepth);  // the layer before this one
+        peelDepth_[(i + 1) % 2].bind(gpu::kUnitPeelDepth);  // the layer before this one
         for (const Draw& d : draws)
             if (d.translucent && d.visible) gpu.draw(d, peelProgram_);
     }
-    glBindTextureUnit(kUnitPeelDepth, 0);
-    glBindTextureUnit(kUnitOpaqueDepth, 0);
+    glBindTextureUnit(gpu::kUnitPeelDepth, 0);
+    glBindTextureUnit(gpu::kUnitOpaqueDepth, 0);
 }
 
 void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, const std::vector<Draw>& draws,
                                             const Prepare& prepare, const gl::Texture& opaqueDepth) {
     prepare(dualPeelProgram_);
-    opaqueDepth.bind(kUnitOpaqueDepth);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    opaqueDepth.bind(gpu::kUnitOpaqueDepth);
+    // Bounds and colours keep the largest value (MAX), transmittances the smallest (MIN, draw
+    // buffers 2 and 4 of the peeling passes): every fragment writes neutral values except into
+    // the one layer it belongs to.
+    gl::PassState state = gl::PassState::fullscreen().withBlend(gl::BlendState::of(GL_MAX, GL_ONE, GL_ONE));
+    state.bufferBlending = {{2, gl::BlendState::of(GL_MIN, GL_ONE, GL_ONE)}, {4, gl::BlendState::of(GL_MIN, GL_ONE, GL_ONE)}};
+    const gl::ScopedPassState scope(state);
     const float outside[4] = {-1, -1, 0, 0}, everything[4] = {0, 1, 0, 0}, black[4] = {0, 0, 0, 0},
                 white[4] = {1, 1, 1, 1};
     auto drawAll = [&] {
@@ -212,8 +193,7 @@ void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, con
     glClearTexImage(dualDepth_[1].id(), 0, GL_RG, GL_FLOAT, everything);
     dualInitFbo_.bind();
     glClearNamedFramebufferfv(dualInitFbo_.id(), GL_COLOR, 0, outside);
-    glBlendEquation(GL_MAX);
-    dualDepth_[1].bind(kUnitDualDepth);
+    dualDepth_[1].bind(gpu::kUnitDualDepth);
     drawAll();
     for (int k = 0; k < passes; ++k) {
         const gl::Framebuffer& fb = dualFbos_[static_cast<std::size_t>(k)];
@@ -223,28 +203,17 @@ void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, con
         glClearNamedFramebufferfv(fb.id(), GL_COLOR, 2, white);
         glClearNamedFramebufferfv(fb.id(), GL_COLOR, 3, black);
         glClearNamedFramebufferfv(fb.id(), GL_COLOR, 4, white);
-        // Bounds and colours keep the largest value, transmittances the smallest: every fragment
-        // writes neutral values except into the one layer it belongs to.
-        for (GLuint b : {0u, 1u, 3u}) glBlendEquationi(b, GL_MAX);
-        for (GLuint b : {2u, 4u}) glBlendEquationi(b, GL_MIN);
-        dualDepth_[k % 2].bind(kUnitDualDepth);
+        dualDepth_[k % 2].bind(gpu::kUnitDualDepth);
         drawAll();
     }
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ZERO);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
-    glBindTextureUnit(kUnitDualDepth, 0);
-    glBindTextureUnit(kUnitOpaqueDepth, 0);
+    glBindTextureUnit(gpu::kUnitDualDepth, 0);
+    glBindTextureUnit(gpu::kUnitOpaqueDepth, 0);
 }
 
 void OrderIndependentTransparency::composite(int mode, int layers, const gl::Framebuffer& hdr, int w, int h) {
     hdr.bind();
     glViewport(0, 0, w, h);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_SRC1_COLOR);
+    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ONE, GL_SRC1_COLOR)));
     resolve_.set("uMode", mode);
     resolve_.set("uLayers", layers);
     accum_.bind(0);
@@ -256,9 +225,6 @@ void OrderIndependentTransparency::composite(int mode, int layers, const gl::Fra
     resolve_.use();
     fullscreen_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ZERO);
-    glEnable(GL_DEPTH_TEST);
 }
 
 }  // namespace penumbra::render

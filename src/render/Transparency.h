@@ -22,8 +22,6 @@ namespace penumbra::render {
 
 enum class TransparencyMode { SortedObjects, SortedTriangles, DepthPeeling, DualDepthPeeling, WeightedBlended, Stochastic };
 const char* toString(TransparencyMode mode);
-// Throws std::invalid_argument listing the names.
-TransparencyMode transparencyFromString(const std::string& name);
 
 class OrderIndependentTransparency {
 public:

@@ -1,6 +1,7 @@
 #include "shadows/ShadowTechnique.h"
 #include "shadows/cascaded/CascadedShadowMap.h"
 #include "shadows/cssm/ColoredStochasticShadowMap.h"
+#include "shadows/distance/DistanceSoftenedShadows.h"
 #include "shadows/hard/HardShadowMap.h"
 #include "shadows/moments/MomentShadowMap.h"
 #include "shadows/none/NoShadows.h"
@@ -43,7 +44,7 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
         pcf("pcf-adaptive", "PCF, 5-tap edge test, 32-tap Poisson only in the penumbra", PercentageCloserFilter::Kernel::Adaptive, 32),
         {"pcss", "percentage-closer soft shadows (Fernando 2005): blocker search, variable-size penumbra",
          [] { return std::make_unique<PercentageCloserSoftShadows>(); }},
-        {"distance", "seed 001: three 3x3 kernels chosen by caster-receiver distance",
+        {"distance", "three 3x3 kernels chosen by caster-receiver distance (Nápravník 2020)",
          [] { return std::make_unique<DistanceSoftenedShadows>(); }},
         moments("vsm", "variance shadow maps (Donnelly & Lauritzen 2006), Gaussian pre-blur, mipmaps, bleeding reduction",
                 MomentShadowMap::Warp::Variance),
@@ -57,7 +58,7 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
          [] { return std::make_unique<CascadedShadowMap>(); }},
         {"lispsm", "light-space perspective shadow maps (Wimmer et al. 2004) for the sun, optimal n, uniform near degenerate angles",
          [] { return std::make_unique<WarpedShadowMap>("lispsm", WarpedShadowMap::Warp::Lispsm, 1, 1); }},
-        {"lispsm-tiled", "seed 002 §3.5: the screen in cols x rows tiles (default 2x2), each tile's sub-frustum its own LiSPSM",
+        {"lispsm-tiled", "the screen in cols x rows tiles (default 2x2), each tile's sub-frustum its own LiSPSM (Plachý 2012 §3.5)",
          [] { return std::make_unique<WarpedShadowMap>("lispsm-tiled", WarpedShadowMap::Warp::Lispsm, 2, 2); }},
         {"psm", "perspective shadow maps (Stamminger & Drettakis 2002) for the sun, inverted projection behind the viewer",
          [] { return std::make_unique<WarpedShadowMap>("psm", WarpedShadowMap::Warp::Psm, 1, 1); }},
@@ -67,7 +68,7 @@ const std::vector<TechniqueInfo>& techniqueRegistry() {
          [] { return std::make_unique<PlanarProjectedShadows>(); }},
         {"cssm1", "coloured stochastic shadow maps (McGuire & Enderton 2011), one map per channel",
          [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::PerChannel); }},
-        {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (seed 000 ch. 5)",
+        {"cssm2", "coloured stochastic shadow maps, one RGB pass with MIN blending (Mátl 2013 ch. 5)",
          [] { return std::make_unique<ColoredStochasticShadowMap>(ColoredStochasticShadowMap::Variant::Rgb); }},
     };
     return registry;
@@ -79,31 +80,17 @@ std::string knownTechniqueNames() {
     return names;
 }
 
-std::vector<std::string> applyParameters(ShadowTechnique& technique, const std::vector<std::pair<std::string, float>>& values) {
-    std::vector<std::string> unknown;
-    auto params = technique.parameters();
-    for (const auto& [name, value] : values) {
-        auto it = std::find_if(params.begin(), params.end(), [&](const Parameter& p) { return p.name == name; });
-        if (it == params.end()) {
-            unknown.push_back(name);
-            continue;
-        }
-        *it->value = std::clamp(value, it->min, it->max);
-    }
-    return unknown;
+std::vector<Parameter> ShadowTechnique::parameters() {
+    std::vector<Parameter> list = declareParameters();
+    for (auto& p : list)
+        for (const auto& [name, text] : defaults_)
+            if (name == p.name) p.defaultText = text;
+    return list;
 }
 
-std::pair<std::string, float> parseParameter(const std::string& text) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param expects name=value, got '" + text + "'");
-    try {
-        std::size_t used = 0;
-        const float v = std::stof(text.substr(eq + 1), &used);
-        if (used != text.size() - eq - 1) throw std::invalid_argument("");
-        return {text.substr(0, eq), v};
-    } catch (const std::exception&) {
-        throw std::invalid_argument("--param " + text + ": the value is not a number");
-    }
+void ShadowTechnique::captureDefaults() {
+    defaults_.clear();
+    for (const auto& p : declareParameters()) defaults_.emplace_back(p.name, p.text());
 }
 
 bool isKnownTechnique(const std::string& name) {
@@ -114,7 +101,11 @@ bool isKnownTechnique(const std::string& name) {
 
 std::unique_ptr<ShadowTechnique> createTechnique(const std::string& name) {
     for (const auto& t : techniqueRegistry())
-        if (t.name == name) return t.create();
+        if (t.name == name) {
+            auto technique = t.create();
+            technique->captureDefaults();
+            return technique;
+        }
     throw std::invalid_argument("unknown shadow technique '" + name + "'; known: " + knownTechniqueNames());
 }
 

@@ -4,10 +4,17 @@
 //     vec3 shadowVisibility(int light, vec3 worldPos, vec3 worldNormal, float NdotL);
 // (rgb: coloured visibility, 1 = fully lit). Adding a technique = a folder here + one line in
 // Registry.cpp.
+//
+// This header is the whole seam between render/ and shadows/: render/ includes nothing else of
+// shadows/, and shadows/ includes nothing of render/ (tests/cli/include_boundaries.cmake checks
+// both). What both sides must agree on in GLSL (units, limits, the light block) lives in
+// gpu/ShaderContract.h.
 #include "gl/Program.h"
 #include "scene/Camera.h"
 #include "scene/Scene.h"
 #include "shadows/LightSpace.h"
+#include "shadows/Parameter.h"
+#include "shadows/ShadowSlots.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +34,7 @@ enum class Casters { Opaque, Translucent };
 struct ShadowFrame {
     const std::vector<scene::Light>* lights = nullptr;
     const std::vector<LightSpace>* lightSpaces = nullptr;  // one per light
+    const ShadowSlots* slots = nullptr;                    // this frame's slots and sun, one per light
     // Draws the chosen casters with `program` bound (uModel and material uniforms are set,
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
     std::function<void(const gl::Program& program, Casters casters)> drawCasters;
@@ -57,13 +65,6 @@ struct DebugLine {
     glm::vec3 color;
 };
 
-// A live, typed knob (UI slider, CLI --param name=value).
-struct Parameter {
-    std::string name;
-    float* value;
-    float min, max;
-};
-
 class ShadowTechnique {
 public:
     virtual ~ShadowTechnique() = default;
@@ -77,13 +78,18 @@ public:
     virtual std::size_t memoryBytes() const = 0;
     virtual std::vector<DebugView> debugViews() const { return {}; }
     virtual std::vector<DebugLine> debugLines() const { return {}; }
-    virtual std::vector<Parameter> parameters() { return {}; }
-};
 
-// Sets the named parameters the technique has; returns the names it does not have.
-std::vector<std::string> applyParameters(ShadowTechnique& technique, const std::vector<std::pair<std::string, float>>& values);
-// Parses "name=value"; throws std::invalid_argument on bad text.
-std::pair<std::string, float> parseParameter(const std::string& text);
+    // The technique's typed knobs, each with the default a fresh technique had.
+    std::vector<Parameter> parameters();
+    // Remembers the current values as the defaults (the registry calls it on creation).
+    void captureDefaults();
+
+protected:
+    virtual std::vector<Parameter> declareParameters() { return {}; }
+
+private:
+    std::vector<std::pair<std::string, std::string>> defaults_;
+};
 
 struct TechniqueInfo {
     std::string name;

@@ -9,7 +9,7 @@
 namespace penumbra::test {
 namespace {
 
-using Params = std::vector<std::pair<std::string, float>>;
+using Params = shadows::ParameterValues;
 
 // Closed casters only (boxes) on an open ground that faces the light. No sphere: on a faceted
 // sphere's terminator the smooth shading normal says lit where the facet faces away from the
@@ -39,10 +39,10 @@ TEST(ShadowVolumes, ExactAgainstTheReferenceForDirectionalAndPointLights) {
         scene::Scene s = sceneFromJson(closedScene(light));
         reference::Comparison cmp(s, 320, 240, 0.0f);
         cmp.traceReference(1, false);
-        for (float zfail : {1.0f, 0.0f}) {
-            const auto score = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", zfail}});
-            std::printf("shadow volumes (%s) %s: %.4f%% wrong\n", zfail > 0 ? "z-fail" : "z-pass", light, 100 * score.wrongShare);
-            EXPECT_LT(score.wrongShare, 0.0005) << light << (zfail > 0 ? " z-fail" : " z-pass");
+        for (bool zfail : {true, false}) {
+            const auto score = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", zfail ? "true" : "false"}});
+            std::printf("shadow volumes (%s) %s: %.4f%% wrong\n", zfail ? "z-fail" : "z-pass", light, 100 * score.wrongShare);
+            EXPECT_LT(score.wrongShare, 0.0005) << light << (zfail ? " z-fail" : " z-pass");
         }
     }
 }
@@ -56,8 +56,8 @@ TEST(ShadowVolumes, ZPassBreaksWithTheCameraInShadowZFailDoesNot) {
                    { "shape": "box", "size": [0.5, 1, 0.5], "position": [1, 0.5, -6] } ] })");
     reference::Comparison cmp(s, 200, 150, 0.0f);
     cmp.traceReference(1, false);
-    const auto zfail = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", 1}});
-    const auto zpass = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", 0}});
+    const auto zfail = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", "true"}});
+    const auto zpass = cmp.evaluate("shadow-volumes", 1024, 0, {{"zfail", "false"}});
     std::printf("camera inside a shadow volume: z-fail %.3f%% wrong, z-pass %.3f%%\n", 100 * zfail.wrongShare, 100 * zpass.wrongShare);
     EXPECT_LT(zfail.wrongShare, 0.0005);
     EXPECT_GT(zpass.wrongShare, 0.2) << "z-pass counts from the eye: inside a volume every count is off by one";
@@ -95,8 +95,8 @@ TEST(PlanarShadows, SpillOffTheReceiverShowsWithoutTheStencil) {
                    { "shape": "box", "size": [0.6, 0.6, 0.6], "position": [0.2, 2.0, 0] } ] })");
     reference::Comparison cmp(s, 240, 180, 0.0f);
     cmp.traceReference(1, false);
-    const int clipped = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"receiver", 1}}));
-    const int spilled = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"receiver", 1}, {"clip_to_receiver", 0}}));
+    const int clipped = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"receiver", "1"}}));
+    const int spilled = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"receiver", "1"}, {"clip_to_receiver", "false"}}));
     std::printf("shadow pixels where the reference is lit: %d with the receiver stencil, %d without (spill)\n", clipped, spilled);
     EXPECT_LE(clipped, 3);
     EXPECT_GT(spilled, 100) << "the flattened shadow must hang past the table's edge over the floor";
@@ -110,7 +110,7 @@ TEST(PlanarShadows, CastersBehindTheLightCastOnlyInTheNaiveVersion) {
     reference::Comparison cmp(s, 200, 150, 0.0f);
     cmp.traceReference(1, false);
     const int right = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0));
-    const int naive = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"naive", 1}}));
+    const int naive = inventedShadowPixels(cmp, cmp.evaluate("planar", 1024, 0, {{"naive", "true"}}));
     std::printf("false shadow of a caster above the light: %d pixels clipped, %d naive\n", right, naive);
     EXPECT_EQ(right, 0);
     EXPECT_GT(naive, 50) << "the naive divide by w throws the caster's anti-shadow onto the ground";
@@ -128,8 +128,8 @@ TEST(PlanarShadows, TheStencilStopsDoubleBlending) {
         const int x = static_cast<int>((c.x / c.w * 0.5f + 0.5f) * f.width), y = static_cast<int>((c.y / c.w * 0.5f + 0.5f) * f.height);
         return f.at(x, y).x;
     };
-    const Frame once = renderChannel(s, render::OutputMode::Visibility, 0, 128, 128, "planar", {{"opacity", 0.5f}});
-    const Frame twice = renderChannel(s, render::OutputMode::Visibility, 0, 128, 128, "planar", {{"opacity", 0.5f}, {"stencil_once", 0}});
+    const Frame once = renderChannel(s, render::OutputMode::Visibility, 0, 128, 128, "planar", {{"opacity", "0.5"}});
+    const Frame twice = renderChannel(s, render::OutputMode::Visibility, 0, 128, 128, "planar", {{"opacity", "0.5"}, {"stencil_once", "false"}});
     EXPECT_NEAR(at(once, -1.0f), 0.5f, 0.01f);
     EXPECT_NEAR(at(once, 2.0f), 0.5f, 0.01f);
     EXPECT_NEAR(at(once, 0.5f), 0.5f, 0.01f) << "overlap darkened once";

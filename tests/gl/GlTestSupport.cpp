@@ -29,7 +29,7 @@ scene::Scene sceneFromJson(const std::string& json) {
 }
 
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int width, int height,
-                    const std::string& technique, const std::vector<std::pair<std::string, float>>& parameters) {
+                    const std::string& technique, const shadows::ParameterValues& parameters) {
     render::RenderOptions options;
     options.technique = technique;
     options.parameters = parameters;

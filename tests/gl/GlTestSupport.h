@@ -26,7 +26,7 @@ scene::Scene sceneFromJson(const std::string& json);
 
 // Renders `scene` at time 0 from its camera and returns the chosen channel.
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light = 0, int width = 256, int height = 256,
-                    const std::string& technique = "hard", const std::vector<std::pair<std::string, float>>& parameters = {});
+                    const std::string& technique = "hard", const shadows::ParameterValues& parameters = {});
 
 // World-space ray through the centre of pixel (x, y) (y up) of the scene camera.
 struct Ray {

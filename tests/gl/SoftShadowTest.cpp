@@ -59,9 +59,9 @@ TEST(SoftShadows, EveryTechniqueAgainstTheAreaLightReference) {
     // The VSM options. Multisampled map: as good as the default. RG16F moments without mipmaps:
     // measured 1.699% - half floats lose E[x^2] - E[x]^2 precision, so lit receivers near their own
     // depth lose a little light (a larger minimum variance does not help: 1e-3 gives 2.04%).
-    const auto msaa = cmp.evaluate("vsm", 2048, 0, {{"msaa", 1.0f}});
+    const auto msaa = cmp.evaluate("vsm", 2048, 0, {{"msaa", "true"}});
     EXPECT_LT(100 * msaa.wrongShare, kMeasuredWrongPercent.at("vsm") * 1.25);
-    const auto half = cmp.evaluate("vsm", 2048, 0, {{"fp16", 1.0f}, {"mipmaps", 0.0f}});
+    const auto half = cmp.evaluate("vsm", 2048, 0, {{"fp16", "true"}, {"mipmaps", "false"}});
     EXPECT_LT(100 * half.wrongShare, 1.699 * 1.25);
     // Variable-size penumbrae approximate an area light better than a fixed kernel.
     EXPECT_LT(scores["pcss"].wrongShare, scores["pcf-poisson32"].wrongShare);
@@ -129,7 +129,7 @@ double meanBleeding(float reduction) {
     render::RenderOptions options;
     options.technique = "vsm";
     options.output = OutputMode::Visibility;
-    options.parameters = {{"blur_radius", 8.0f}, {"bleed_reduction", reduction}, {"mipmaps", 0.0f}};
+    options.parameters = {{"blur_radius", "8"}, {"bleed_reduction", std::to_string(reduction)}, {"mipmaps", "false"}};
     render::Renderer renderer(s, options);
     render::OffscreenTarget target(w, h);
     renderer.render(0.0f, s.camera, w, h, target.framebuffer());

@@ -76,16 +76,16 @@ TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
       "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "shadow": { "resolution": 512 } } ],
       "objects": [ { "shape": "plane", "size": [100, 1000], "position": [0, 0, -480] },
                    { "shape": "box", "size": [60, 30, 1], "position": [0, 15, -20.5] } ] })");
-    auto cascadesWith = [&](float sdsm) {
+    auto cascadesWith = [&](bool sdsm) {
         render::RenderOptions options;
         options.technique = "cascaded";
-        options.parameters = {{"sdsm", sdsm}};
+        options.parameters = {{"sdsm", sdsm ? "true" : "false"}};
         render::Renderer renderer(s, options);
         render::OffscreenTarget target(160, 90);
         renderer.render(0.0f, s.camera, 160, 90, target.framebuffer());
         return dynamic_cast<const shadows::CascadedShadowMap&>(renderer.technique()).cascades();
     };
-    const auto plain = cascadesWith(0.0f), sdsm = cascadesWith(1.0f);
+    const auto plain = cascadesWith(false), sdsm = cascadesWith(true);
     ASSERT_EQ(plain.size(), 4u);
     ASSERT_EQ(sdsm.size(), 4u);
     std::printf("last split: %.1f m plain, %.1f m SDSM; first cascade texel %.4f m plain, %.4f m SDSM\n", plain.back().splitFar,

@@ -1,7 +1,7 @@
 #include "shadows/cascaded/CascadedShadowMap.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,27 +9,32 @@
 
 namespace penumbra::shadows {
 
-std::vector<Parameter> CascadedShadowMap::parameters() {
-    return {{"cascades", &count_, 1, 8},           {"lambda", &lambda_, 0, 1},
-            {"stabilize", &stabilize_, 0, 1},      {"blend", &blend_, 0, 0.5f},
-            {"select_by_projection", &select_, 0, 1}, {"debug_tint", &debugTint_, 0, 1},
-            {"freeze", &freeze_, 0, 1},            {"max_distance", &maxDistance_, 0, 100000},
-            {"sdsm", &sdsm_, 0, 1},                {"draw_frusta", &drawFrusta_, 0, 1}};
+std::vector<Parameter> CascadedShadowMap::declareParameters() {
+    return {Parameter::integer("cascades", count_, 1, 8, "number of splits m"),
+            Parameter::real("lambda", lambda_, 0, 1, "split scheme: C_i = λ C_log + (1 - λ) C_uni (Zhang et al. 2006)"),
+            Parameter::flag("stabilize", stabilize_, "bounding-sphere fit and texel snapping against shimmer"),
+            Parameter::real("blend", blend_, 0, 0.5f, "share of each cascade blended into the next"),
+            Parameter::choice("select", select_, {"depth", "projection"}, "cascade chosen by view depth or by the first box holding the point"),
+            Parameter::flag("debug_tint", debugTint_, "tint each cascade"),
+            Parameter::flag("freeze", freeze_, "stop refitting, to fly away and look at the cascades"),
+            Parameter::real("max_distance", maxDistance_, 0, 100000, "> 0: split no further than this (world units)"),
+            Parameter::flag("sdsm", sdsm_, "split only the visible depth range, from a camera pre-pass (Lauritzen et al. 2011)"),
+            Parameter::flag("draw_frusta", drawFrusta_, "draw each cascade's camera slice and light box with the overlay")};
 }
 
 void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // other lights, and every light's coloured tint
     const auto& lights = *frame.lights;
-    light_ = DepthAndTintMaps::firstShadowedSun(lights);
+    light_ = frame.slots->sun;
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
-    const int count = std::clamp(static_cast<int>(std::lround(count_)), 1, 8);
+    const int count = std::clamp(count_, 1, 8);
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     const scene::Camera& cam = *frame.camera;
-    if (freeze_ < 0.5f || static_cast<int>(fitted_.size()) != count || fittedResolution_ != res) {
+    if (!freeze_ || static_cast<int>(fitted_.size()) != count || fittedResolution_ != res) {
         fittedResolution_ = res;
         float near = cam.near, far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
-        if (sdsm_ > 0.5f && frame.drawSurfaces)
+        if (sdsm_ && frame.drawSurfaces)
             if (const auto bounds = depthBounds_.measure(frame)) {  // SDSM: split only what is visible
                 near = std::max(near, bounds->first * 0.99f);
                 far = std::max(std::min(far, bounds->second * 1.01f), near * 1.01f);
@@ -39,7 +44,7 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
         slices_.clear();
         for (int c = 0; c < count; ++c) {
             const float a = splits_[static_cast<std::size_t>(c)], b = splits_[static_cast<std::size_t>(c) + 1];
-            fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_ > 0.5f));
+            fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_));
             slices_.push_back(frustumCorners(glm::perspective(glm::radians(cam.fovDeg), frame.aspect, a, b) * cam.view()));
         }
         cameraView_ = cam.view();
@@ -54,7 +59,7 @@ void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
     lighting.set("uCascadeLight", cascades_.empty() ? -1 : light_);
     if (light_ < 0 || cascades_.empty()) return;
-    cascades_.bind(render::kUnitLayered);
+    cascades_.bind(gpu::kUnitLayered);
     const int count = static_cast<int>(fitted_.size());
     lighting.set("uCascadeCount", count);
     glProgramUniform1fv(lighting.id(), lighting.location("uCascadeSplits[0]"), count + 1, splits_.data());
@@ -68,8 +73,8 @@ void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {
     glProgramUniform3fv(lighting.id(), lighting.location("uCascadeTexel[0]"), count, &texels[0].x);
     lighting.set("uCascadeCameraView", cameraView_);
     lighting.set("uCascadeBlend", blend_);
-    lighting.set("uCascadeSelect", select_ > 0.5f ? 1 : 0);
-    lighting.set("uCascadeDebug", debugTint_ > 0.5f ? 1 : 0);
+    lighting.set("uCascadeSelect", select_);
+    lighting.set("uCascadeDebug", debugTint_ ? 1 : 0);
 }
 
 std::vector<DebugView> CascadedShadowMap::debugViews() const {
@@ -88,7 +93,7 @@ static void appendBox(std::vector<DebugLine>& lines, const std::array<glm::vec3,
 // freeze the cascades and fly away to see how they cover the view.
 std::vector<DebugLine> CascadedShadowMap::debugLines() const {
     std::vector<DebugLine> lines;
-    if (drawFrusta_ < 0.5f) return lines;
+    if (!drawFrusta_) return lines;
     static const glm::vec3 kTints[4] = {{1.0f, 0.3f, 0.3f}, {0.3f, 1.0f, 0.3f}, {0.3f, 0.3f, 1.0f}, {1.0f, 1.0f, 0.3f}};
     for (std::size_t c = 0; c < fitted_.size() && c < slices_.size(); ++c) {
         appendBox(lines, slices_[c], kTints[c % 4]);

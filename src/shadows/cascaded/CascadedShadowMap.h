@@ -20,12 +20,15 @@ public:
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + cascades_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override;
     std::vector<DebugLine> debugLines() const override;
-    std::vector<Parameter> parameters() override;
     const std::vector<Cascade>& cascades() const { return fitted_; }
 
+protected:
+    std::vector<Parameter> declareParameters() override;
+
 private:
-    float count_ = 4, lambda_ = 0.75f, stabilize_ = 1, blend_ = 0.1f, select_ = 0, debugTint_ = 0, freeze_ = 0,
-          maxDistance_ = 0, sdsm_ = 0, drawFrusta_ = 1;
+    int count_ = 4, select_ = 0;  // select: 0 by depth, 1 by projection (the lookup's uCascadeSelect)
+    float lambda_ = 0.75f, blend_ = 0.1f, maxDistance_ = 0;
+    bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true;
     int light_ = -1, fittedResolution_ = 0;
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;

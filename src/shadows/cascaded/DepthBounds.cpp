@@ -1,12 +1,15 @@
 #include "shadows/cascaded/DepthBounds.h"
 
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
+
 #include <algorithm>
 #include <vector>
 
 namespace penumbra::shadows {
 
 DepthBounds::DepthBounds() {
-    program_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/shadow_depth.frag"});
+    program_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
 }
 
 std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& frame) {
@@ -21,10 +24,13 @@ std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& f
         target_.checkComplete("SDSM depth pre-pass");
     }
     const scene::Camera& cam = *frame.camera;
-    gl::unbindTextureUnits();
-    target_.beginDepthPass(size.x, size.y);
-    program_.set("uLightViewProj", cam.projection(frame.aspect) * cam.view());
-    frame.drawSurfaces(program_, -1);
+    gl::unbindTextureUnits(gpu::kLightingUnits);
+    {
+        const gl::ScopedPassState state(gl::PassState::depthOnly());
+        target_.beginDepthPass(size.x, size.y);
+        program_.set("uLightViewProj", cam.projection(frame.aspect) * cam.view());
+        frame.drawSurfaces(program_, -1);
+    }
     std::vector<float> depth(static_cast<std::size_t>(size.x) * size.y);
     glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
     float lo = 1.0f, hi = 0.0f;

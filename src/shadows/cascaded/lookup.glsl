@@ -1,9 +1,9 @@
 // Cascaded / parallel-split shadow maps (Zhang et al. 2006) for the sun; other lights use the
 // plain hard lookup. The cascade is chosen by view depth (or by the first box that contains the
 // point), and blended with the next one near the split so the border does not show.
-#include "shaders/common/shadow_filtering.glsl"
+#include "src/shadows/common/glsl/shadow_filtering.glsl"
 
-layout(binding = UNIT_LAYERED) uniform sampler2DArrayShadow uCascades;
+layout(binding = kUnitLayered) uniform sampler2DArrayShadow uCascades;
 uniform int uCascadeLight;        // index of the cascaded light, -1: none
 uniform int uCascadeCount;
 uniform float uCascadeSplits[9];  // view-space distances

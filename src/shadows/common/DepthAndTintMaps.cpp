@@ -1,37 +1,18 @@
 #include "shadows/common/DepthAndTintMaps.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
 namespace penumbra::shadows {
 
 using scene::Light;
 
 DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
-    depthProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
-                                        .fragment = "shaders/passes/shadow_depth.frag"});
-    tintProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert",
-                                       .fragment = "shaders/passes/shadow_transmit.frag"});
-}
-
-std::vector<int> DepthAndTintMaps::slots(const std::vector<Light>& lights) {
-    std::vector<int> out;
-    int next2D = 0, nextCube = 0;
-    for (const auto& l : lights) {
-        if (!l.shadow.enabled) { out.push_back(-1); continue; }
-        if (l.type == Light::Type::Point)
-            out.push_back(nextCube < render::kMaxShadowCube ? nextCube++ : -1);
-        else
-            out.push_back(next2D < render::kMaxShadow2D ? next2D++ : -1);
-    }
-    return out;
-}
-
-int DepthAndTintMaps::firstShadowedSun(const std::vector<Light>& lights) {
-    const std::vector<int> slot = slots(lights);
-    for (std::size_t i = 0; i < lights.size(); ++i)
-        if (lights[i].type == Light::Type::Directional && slot[i] >= 0) return static_cast<int>(i);
-    return -1;
+    depthProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
+                                        .fragment = "src/shadows/common/glsl/depth.frag"});
+    tintProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
+                                       .fragment = "src/shadows/common/glsl/transmit.frag"});
 }
 
 void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
@@ -80,73 +61,55 @@ void DepthAndTintMaps::setFiltering(GLenum filter) {
 void DepthAndTintMaps::render(const ShadowFrame& frame) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
-    slots_ = slots(lights);
-    cube_.assign(lights.size(), false);
+    slots_ = *frame.slots;
     const float white[4] = {1, 1, 1, 1};
     const float farDepth = 1.0f;
     for (std::size_t i = 0; i < lights.size(); ++i) {
-        if (slots_[i] < 0) continue;
+        if (!slots_.shadowed(i)) continue;
         const Light& light = lights[i];
         const LightSpace& ls = spaces[i];
-        cube_[i] = ls.faceCount == 6;
-        ensure(i, ls.resolution, cube_[i]);
+        ensure(i, ls.resolution, slots_.cube[i]);
         gl::DebugGroup group(("shadow map: " + light.name).c_str());
         // Unbind every texture unit first. Measured on llvmpipe: with the previous frame's lookup
         // textures still bound, every shadow map after the first in a frame costs 7-10x more to
         // rasterise (2048^2, one thread: 145-190 ms instead of 15-20 ms), whatever its order.
-        gl::unbindTextureUnits();
+        gl::unbindTextureUnits(gpu::kLightingUnits);
         LightMaps& m = maps_[i];
+        const glm::vec2 po = light.shadow.polygonOffset;
+        // 1. opaque casters: depth only, with the light's polygon offset. 2. translucent casters
+        // in front of the opaque depth: transmittance multiplied into rgb (dst * src), the nearest
+        // translucent depth kept in alpha (MIN); no depth writes.
+        const gl::PassState opaquePass = gl::PassState::depthOnly().withPolygonOffset(po.x, po.y);
+        gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
+        tintPass.depthWrite = false;
         glViewport(0, 0, ls.resolution, ls.resolution);
         for (int f = 0; f < ls.faceCount; ++f) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];
 
-            // 1. Opaque casters: depth only, with the light's polygon offset.
-            m.depthFaces[face].bind();
-            glClearNamedFramebufferfv(m.depthFaces[face].id(), GL_DEPTH, 0, &farDepth);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glDepthMask(GL_TRUE);
-            const glm::vec2 po = light.shadow.polygonOffset;
-            if (po.x != 0.0f || po.y != 0.0f) {
-                glEnable(GL_POLYGON_OFFSET_FILL);
-                glPolygonOffset(po.x, po.y);
+            {
+                const gl::ScopedPassState state(opaquePass);
+                m.depthFaces[face].bind();
+                glClearNamedFramebufferfv(m.depthFaces[face].id(), GL_DEPTH, 0, &farDepth);
+                depthProgram_.set("uLightViewProj", vp);
+                frame.drawCasters(depthProgram_, Casters::Opaque);
             }
-            depthProgram_.set("uLightViewProj", vp);
-            frame.drawCasters(depthProgram_, Casters::Opaque);
-            glDisable(GL_POLYGON_OFFSET_FILL);
-
             if (!withTint_) continue;
-            // 2. Translucent casters in front of the opaque depth: multiply transmittance
-            //    into rgb, keep the nearest translucent depth in alpha.
             m.tintFaces[face].bind();
             glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
-            glDepthMask(GL_FALSE);
-            glEnable(GL_BLEND);
-            glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
-            glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE);
+            const gl::ScopedPassState state(tintPass);
             tintProgram_.set("uLightViewProj", vp);
             frame.drawCasters(tintProgram_, Casters::Translucent);
-            // Leave the default blend state for whoever draws next.
-            glDisable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunc(GL_ONE, GL_ZERO);
-            glDepthMask(GL_TRUE);
         }
     }
 }
 
-GLuint DepthAndTintMaps::rawUnit(std::size_t light) const {
-    return (cube_[light] ? render::kUnitRawCube : render::kUnitRaw2D) + static_cast<GLuint>(slots_[light]);
-}
-
 void DepthAndTintMaps::bind(bool rawDepth) const {
     for (std::size_t i = 0; i < slots_.size() && i < maps_.size(); ++i) {
-        if (slots_[i] < 0 || maps_[i].depth.id() == 0) continue;
-        const auto slot = static_cast<GLuint>(slots_[i]);
-        const GLuint raw = rawUnit(i);
-        maps_[i].depth.bind((cube_[i] ? render::kUnitShadowCube : render::kUnitShadow2D) + slot);
-        maps_[i].tint.bind((cube_[i] ? render::kUnitTintCube : render::kUnitTint2D) + slot);
+        if (!slots_.shadowed(i) || maps_[i].depth.id() == 0) continue;
+        const auto raw = static_cast<GLuint>(slots_.rawUnit(i));
+        maps_[i].depth.bind(static_cast<GLuint>(slots_.depthUnit(i)));
+        maps_[i].tint.bind(static_cast<GLuint>(slots_.tintUnit(i)));
         if (rawDepth) {
             maps_[i].depth.bind(raw);
             rawSampler_.bind(raw);

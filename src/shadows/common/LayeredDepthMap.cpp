@@ -1,15 +1,17 @@
 #include "shadows/common/LayeredDepthMap.h"
 
 #include "gl/Debug.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 
 namespace penumbra::shadows {
 
 LayeredDepthMap::LayeredDepthMap() {
-    casters_ = gl::Program::build({.vertex = "src/shadows/common/layered_caster.vert",
-                                   .fragment = "shaders/passes/shadow_depth.frag",
-                                   .geometry = "src/shadows/common/layered_caster.geom"});
+    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/layered_caster.vert",
+                                   .fragment = "src/shadows/common/glsl/depth.frag",
+                                   .geometry = "src/shadows/common/glsl/layered_caster.geom"});
 }
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
@@ -29,17 +31,15 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
     }
     std::vector<glm::vec4> planes(clipPlanes);
     planes.resize(static_cast<std::size_t>(count), glm::vec4(0, 0, 0, 1));  // w = 1: keep everything
-    gl::unbindTextureUnits();  // see DepthAndTintMaps::render
+    gl::unbindTextureUnits(gpu::kLightingUnits);  // see DepthAndTintMaps::render
+    gl::PassState pass = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
+    pass.clipDistance0 = true;
+    const gl::ScopedPassState state(pass);
     target_.beginDepthPass(res, res);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glEnable(GL_CLIP_DISTANCE0);
-    glPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
     glProgramUniformMatrix4fv(casters_.id(), casters_.location("uLayerViewProj[0]"), count, GL_FALSE, &viewProj[0][0][0]);
     glProgramUniform4fv(casters_.id(), casters_.location("uLayerClip[0]"), count, &planes[0].x);
     casters_.set("uLayerCount", count);
     frame.drawCasters(casters_, Casters::Opaque);
-    glDisable(GL_CLIP_DISTANCE0);
-    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 DebugView LayeredDepthMap::debugView(const std::string& label) const {

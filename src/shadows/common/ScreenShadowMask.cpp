@@ -1,15 +1,16 @@
 #include "shadows/common/ScreenShadowMask.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 
 namespace penumbra::shadows {
 
 ScreenShadowMask::ScreenShadowMask() {
-    depthProgram_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/shadow_depth.frag"});
-    stencilToMask_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/shadowed.frag"});
+    depthProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
+    stencilToMask_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/glsl/shadowed.frag"});
 }
 
 void ScreenShadowMask::begin(const ShadowFrame& frame) {
@@ -38,17 +39,15 @@ void ScreenShadowMask::begin(const ShadowFrame& frame) {
     const scene::Camera& cam = *frame.camera;
     viewProj_ = cam.projection(frame.aspect) * cam.view();
     depthRange_ = {cam.near, cam.far};
-    gl::unbindTextureUnits();
+    gl::unbindTextureUnits(gpu::kLightingUnits);
     layers_[0].bind();
     glViewport(0, 0, size_.x, size_.y);
     glClearNamedFramebufferfi(layers_[0].id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl::PassState prePass = gl::PassState::depthOnly();
+    prePass.colorWrite = glm::bvec4(false);
+    const gl::ScopedPassState state(prePass);
     depthProgram_.set("uLightViewProj", viewProj_);
     frame.drawSurfaces(depthProgram_, -1);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 void ScreenShadowMask::beginLight(int light, int stencil) {
@@ -61,20 +60,16 @@ void ScreenShadowMask::beginLight(int light, int stencil) {
 }
 
 void ScreenShadowMask::shadowWhereStencilNonZero() {
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_NOTEQUAL, 0, 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    const gl::ScopedPassState state(gl::PassState::fullscreen().withStencil({.func = GL_NOTEQUAL, .ref = 0, .mask = 0xff}));
     stencilToMask_.use();
     emptyVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_STENCIL_TEST);
 }
 
 void ScreenShadowMask::bind(const gl::Program& lighting) const {
     if (mask_.id() == 0) return;
-    mask_.bind(render::kUnitScreenShadow);
-    depth_.bind(render::kUnitScreenDepth);
+    mask_.bind(gpu::kUnitScreenShadow);
+    depth_.bind(gpu::kUnitScreenDepth);
     lighting.set("uScreenMaskDepthRange", depthRange_);
 }
 

@@ -1,8 +1,8 @@
 #include "shadows/cssm/ColoredStochasticShadowMap.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
-#include "shadows/pcf/PercentageCloserFilter.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,22 +10,25 @@
 namespace penumbra::shadows {
 
 ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
-    : variant_(variant), fp16_(variant == Variant::Rgb ? 1.0f : 0.0f), poisson_(poissonDisk(32)) {
-    copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/cssm_copy.frag"});
-    casters_ = gl::Program::build({.vertex = "shaders/passes/shadow_caster.vert", .fragment = "shaders/passes/cssm_caster.frag"});
+    : variant_(variant), fp16_(variant == Variant::Rgb) {
+    copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/copy.frag"});
+    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/cssm/caster.frag"});
 }
 
-std::vector<Parameter> ColoredStochasticShadowMap::parameters() {
-    return {{"filter", &filter_, 0, 4},  // 0 pcf9, 1 poisson16, 2 poisson20, 3 random30, 4 cross13
-            {"radius_texels", &radiusTexels_, 0.0f, 8.0f},  // 0: automatic (distinct texels per tap)
-            {"rng", &generator_, 0, 1},  // 0 PCG hash, 1 fract(sin)
-            {"fp16", &fp16_, 0, 1}};
+std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
+    // Labels in the order of CssmFilter.h and of the kRandom* codes.
+    return {Parameter::choice("filter", filter_, {"pcf9", "poisson16", "poisson20", "random30", "cross13"},
+                              "reconstruction filter of the lookup (Mátl 2013 §5.3)"),
+            Parameter::real("radius_texels", radiusTexels_, 0.0f, 8.0f,
+                            "Poisson / random filter radius; 0: automatic, so that taps land on distinct texels"),
+            Parameter::choice("rng", generator_, {"pcg", "sin-fract"}, "per-fragment random number generator"),
+            Parameter::flag("fp16", fp16_, "RGBA16F colour map (else RGBA32F)")};
 }
 
 void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& depth) {
     if (maps_.size() <= i) maps_.resize(i + 1);
     LightMap& m = maps_[i];
-    const GLenum format = fp16_ > 0.5f ? GL_RGBA16F : GL_RGBA32F;
+    const GLenum format = fp16_ ? GL_RGBA16F : GL_RGBA32F;
     if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format) return;
     m = LightMap{};
     m.resolution = depth.resolution;
@@ -53,10 +56,15 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     depth_.render(frame);  // 1. opaque casters' depth
     gl::DebugGroup group(name().c_str());
-    casters_.set("uRandomGenerator", generator_ > 0.5f ? 1 : 0);
+    casters_.set("uRandomGenerator", generator_);
     casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
-    for (std::size_t i = 0; i < depth_.lightCount(); ++i) {
-        if (depth_.slot(i) < 0) continue;
+    // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
+    // depth (tested, not written), MIN-blended per channel.
+    const gl::PassState copyPass = gl::PassState::fullscreen();
+    gl::PassState casterPass = gl::PassState::depthOnly().withBlend(gl::BlendState::of(GL_MIN, GL_ONE, GL_ONE));
+    casterPass.depthWrite = false;
+    for (std::size_t i = 0; i < depth_.slots().size(); ++i) {
+        if (!depth_.slots().shadowed(i)) continue;
         ensure(i, depth_.maps(i));
         LightMap& m = maps_[i];
         const LightSpace& ls = (*frame.lightSpaces)[i];
@@ -68,50 +76,43 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
         glViewport(0, 0, m.resolution, m.resolution);
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
             m.targets[f].bind();
-            // 2. Opaque depth into every channel (1 = white where nothing opaque is).
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_BLEND);
-            copy_.use();
-            depthSampler_.bind(0);
-            m.depthFaces[f].bind(0);
-            fullscreenVao_.bind();
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            gl::Sampler::unbind(0);
-            // 3. Translucent casters in front of the opaque depth, MIN-blended per channel.
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glDepthMask(GL_FALSE);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_MIN);
+            {  // 1 (white) where nothing opaque is
+                const gl::ScopedPassState state(copyPass);
+                copy_.use();
+                depthSampler_.bind(0);
+                m.depthFaces[f].bind(0);
+                fullscreenVao_.bind();
+                glDrawArrays(GL_TRIANGLES, 0, 3);
+                gl::Sampler::unbind(0);
+            }
             casters_.set("uLightViewProj", ls.viewProj[f]);
             if (variant_ == Variant::Rgb) {
+                const gl::ScopedPassState state(casterPass);
                 casters_.set("uChannel", -1);
                 frame.drawCasters(casters_, Casters::Translucent);
-            } else {
-                for (int c = 0; c < 3; ++c) {  // one map per wavelength
-                    glColorMask(c == 0, c == 1, c == 2, GL_FALSE);
-                    casters_.set("uChannel", c);
-                    frame.drawCasters(casters_, Casters::Translucent);
-                }
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                continue;
             }
-            glBlendEquation(GL_FUNC_ADD);
-            glDisable(GL_BLEND);
-            glDepthMask(GL_TRUE);
+            for (int c = 0; c < 3; ++c) {  // one map per wavelength
+                gl::PassState channelPass = casterPass;
+                channelPass.colorWrite = glm::bvec4(c == 0, c == 1, c == 2, false);
+                const gl::ScopedPassState state(channelPass);
+                casters_.set("uChannel", c);
+                frame.drawCasters(casters_, Casters::Translucent);
+            }
         }
     }
 }
 
 void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     depth_.bind();
-    for (std::size_t i = 0; i < depth_.lightCount() && i < maps_.size(); ++i) {
-        if (depth_.slot(i) < 0 || !maps_[i].colour.id()) continue;
-        maps_[i].colour.bind(depth_.rawUnit(i));
+    for (std::size_t i = 0; i < depth_.slots().size() && i < maps_.size(); ++i) {
+        if (!depth_.slots().shadowed(i) || !maps_[i].colour.id()) continue;
+        maps_[i].colour.bind(static_cast<GLuint>(depth_.slots().rawUnit(i)));
     }
-    lighting.set("uFilter", std::clamp(static_cast<int>(std::lround(filter_)), 0, 4));
+    lighting.set("uFilter", filter_);
     lighting.set("uRadiusTexels", radiusTexels_);
-    lighting.set("uStorageEpsilon", fp16_ > 0.5f ? 1.0f / 1024.0f : 0.0f);
-    glProgramUniform2fv(lighting.id(), lighting.location("uPoisson[0]"), static_cast<GLsizei>(poisson_.size()), &poisson_[0].x);
+    lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
+    poisson_.upload(lighting);
 }
 
 std::size_t ColoredStochasticShadowMap::memoryBytes() const {

@@ -5,12 +5,14 @@
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/PoissonDisk.h"
+#include "shadows/cssm/CssmFilter.h"
 
 #include <glm/glm.hpp>
 
 namespace penumbra::shadows {
 
-// Colored Stochastic Shadow Maps (McGuire & Enderton 2011, seed 000 ch. 4-5). Per light: the
+// Colored Stochastic Shadow Maps (McGuire & Enderton 2011; Mátl 2013 ch. 4-5). Per light: the
 // opaque casters' depth, copied (linearised) into the channels of a colour map; translucent
 // casters then write their depth per channel with probability ρ_λ = (1 - t_λ) α under MIN
 // blending. Layers multiply naturally: light passes a texel only if no layer stopped it, so two
@@ -29,7 +31,9 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;
-    std::vector<Parameter> parameters() override;
+
+protected:
+    std::vector<Parameter> declareParameters() override;
 
 private:
     struct LightMap {
@@ -43,8 +47,10 @@ private:
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
 
     Variant variant_;
-    float filter_ = 4, radiusTexels_ = 0.0f, generator_ = 0, fp16_;
-    std::vector<glm::vec2> poisson_;
+    int filter_ = gpu::kCssmCross13, generator_ = gpu::kRandomPcg;
+    float radiusTexels_ = 0.0f;
+    bool fp16_;
+    PoissonDisk poisson_;
     DepthAndTintMaps depth_{/*withTint=*/false};
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_;

@@ -1,14 +1,14 @@
-// Coloured stochastic shadow map lookup (McGuire & Enderton 2011; seed 000 §5.3):
+// Coloured stochastic shadow map lookup (McGuire & Enderton 2011; Mátl 2013 §5.3):
 // X += (map.rgb(s + Δ) > s.z) over n taps, received light X·L/n. Filters compared in the
-// thesis: 0 PCF 3x3 (9 taps), 1 Poisson 16, 2 Poisson 20, 3 uniform random 30, 4 the 13-tap
-// cross-plus-square {(0,0), (±3,±3), (±4,0), (0,±4), (±7,0), (0,±7)} texels, every tap jittered by
-// δ(s) = ([(5 s) mod 2] - 1) / (6 (‖∂s/∂x‖₁, ‖∂s/∂y‖₁)).
-#include "shaders/common/shadow_filtering.glsl"
+// thesis (CssmFilter.h): PCF 3x3 (9 taps), Poisson 16, Poisson 20, uniform random 30, and the
+// 13-tap cross-plus-square {(0,0), (±3,±3), (±4,0), (0,±4), (±7,0), (0,±7)} texels, every tap
+// jittered by δ(s) = ([(5 s) mod 2] - 1) / (6 (‖∂s/∂x‖₁, ‖∂s/∂y‖₁)).
+#include "src/shadows/common/glsl/kernels.glsl"
+#include "src/shadows/cssm/CssmFilter.h"
 
-uniform int uFilter;
+uniform int uFilter;  // kCssm*
 uniform float uStorageEpsilon;  // relative precision of the stored depth (RGBA16F: 2^-10), 0 for fp32
 uniform float uRadiusTexels;  // <= 0: automatic, so that the taps land on distinct texels
-uniform vec2 uPoisson[32];
 
 const vec2 kCross13[13] = vec2[](vec2(0, 0), vec2(3, 3), vec2(-3, 3), vec2(3, -3), vec2(-3, -3), vec2(4, 0),
                                  vec2(-4, 0), vec2(0, 4), vec2(0, -4), vec2(7, 0), vec2(-7, 0), vec2(0, 7), vec2(0, -7));
@@ -34,26 +34,21 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     if (!s.inside) return vec3(1.0);
     vec3 sum = vec3(0.0);
     int n;
-    if (uFilter == 0) {
+    if (uFilter == kCssmPcf9) {
         n = 9;
         for (int j = -1; j <= 1; ++j)
             for (int i = -1; i <= 1; ++i) sum += passes(s, vec2(i, j));
-    } else if (uFilter == 1 || uFilter == 2) {
-        n = uFilter == 1 ? 16 : 20;
+    } else if (uFilter == kCssmPoisson16 || uFilter == kCssmPoisson20) {
+        n = uFilter == kCssmPoisson16 ? 16 : 20;
         // n taps need about n texels under the disk: r = sqrt(n / π), with room to spare.
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
-        float a = 6.2831853 * interleavedGradientNoise(gl_FragCoord.xy);
-        mat2 rot = mat2(cos(a), sin(a), -sin(a), cos(a));
-        for (int i = 0; i < n; ++i) sum += passes(s, rot * uPoisson[i] * radius);
-    } else if (uFilter == 3) {
+        mat2 rot = pixelRotation();
+        for (int i = 0; i < n; ++i) sum += passes(s, poissonTap(i, rot, radius));
+    } else if (uFilter == kCssmRandom30) {
         n = 30;
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
-        uint seed = uint(gl_FragCoord.x) * 1973u + uint(gl_FragCoord.y) * 9277u;
-        for (int i = 0; i < n; ++i) {
-            float u = hashToUnit(seed + uint(i) * 26699u), v = hashToUnit(seed + uint(i) * 26699u + 1u);
-            sum += passes(s, vec2(cos(6.2831853 * u), sin(6.2831853 * u)) * sqrt(v) * radius);
-        }
-    } else {
+        for (int i = 0; i < n; ++i) sum += passes(s, randomDiskTap(i, radius));
+    } else {  // kCssmCross13
         n = 13;
         // Norms below 1/6 texel per pixel (strong magnification) would push δ past a texel: the
         // jitter is meant to be a micro-offset, so it is bounded to one texel.

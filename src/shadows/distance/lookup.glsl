@@ -1,7 +1,7 @@
-// Seed 001's "Fresnel effect of shadows": the shadow softens with the caster-receiver distance.
+// The "Fresnel effect of shadows" of seed document 001 (a small coloured-light engine): the shadow softens with the caster-receiver distance.
 // Three 3x3 kernels, each summing to 9, chosen by that distance:
 //   near [0 0 0; 0 9 0; 0 0 0], middle [.5 .5 .5; .5 5 .5; .5 .5 .5], far all ones.
-#include "shaders/common/shadow_filtering.glsl"
+#include "src/shadows/common/glsl/shadow_filtering.glsl"
 
 uniform float uNearDistance;   // world units: below this the near kernel
 uniform float uFarDistance;    // above this the far kernel

@@ -1,7 +1,8 @@
 #include "shadows/moments/MomentShadowMap.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,25 +15,31 @@ MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
       // EVSM stores the square too, so c+ = 40 (e^{80} < 3.4e38).
       positiveExponent_(warp == Warp::Exponential ? 80.0f : 40.0f),
       bleedReduction_(warp == Warp::Variance ? 0.2f : 0.0f) {
-    toMoments_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/moments.frag"});
-    blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/blur.frag"});
+    toMoments_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag"});
+    blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/blur.frag"});
 }
 
-std::vector<Parameter> MomentShadowMap::parameters() {
-    std::vector<Parameter> p{{"blur_radius", &blurRadius_, 0, 16}, {"fp16", &fp16_, 0, 1}, {"mipmaps", &mipmaps_, 0, 1},
-                             {"msaa", &msaa_, 0, 1}};
+std::vector<Parameter> MomentShadowMap::declareParameters() {
+    std::vector<Parameter> p{
+        Parameter::integer("blur_radius", blurRadius_, 0, 16, "separable Gaussian pre-filter radius in texels (sigma = radius / 2)"),
+        Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit"),
+        Parameter::flag("mipmaps", mipmaps_, "mipmaps + 16x anisotropic filtering of the moments"),
+        Parameter::flag("msaa", msaa_, "moments averaged over a 4x multisampled depth map")};
     if (warp_ == Warp::Variance || warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) {
-        p.push_back({"min_variance", &minVariance_, 0.0f, 1e-2f});
-        p.push_back({"bleed_reduction", &bleedReduction_, 0.0f, 0.95f});
+        p.push_back(Parameter::real("min_variance", minVariance_, 0.0f, 1e-2f, "variance floor against acne"));
+        p.push_back(Parameter::real("bleed_reduction", bleedReduction_, 0.0f, 0.95f,
+                                    "light-bleeding reduction: p_max mapped by linstep(amount, 1) (Lauritzen)"));
     }
-    if (warp_ != Warp::Variance && warp_ != Warp::Moments4) p.push_back({"exponent", &positiveExponent_, 1.0f, 88.0f});
-    if (warp_ == Warp::ExponentialVariance4) p.push_back({"negative_exponent", &negativeExponent_, 1.0f, 40.0f});
-    if (warp_ == Warp::Moments4) p.push_back({"moment_bias", &momentBias_, 0.0f, 1e-2f});
+    if (warp_ != Warp::Variance && warp_ != Warp::Moments4)
+        p.push_back(Parameter::real("exponent", positiveExponent_, 1.0f, 88.0f, "positive warp exponent c+"));
+    if (warp_ == Warp::ExponentialVariance4)
+        p.push_back(Parameter::real("negative_exponent", negativeExponent_, 1.0f, 40.0f, "negative warp exponent c-"));
+    if (warp_ == Warp::Moments4) p.push_back(Parameter::real("moment_bias", momentBias_, 0.0f, 1e-2f, "moment bias alpha (Peters & Klein)"));
     return p;
 }
 
 GLenum MomentShadowMap::format() const {
-    const bool half = fp16_ > 0.5f;
+    const bool half = fp16_;
     switch (warp_) {
         case Warp::Variance: return half ? GL_RG16F : GL_RG32F;
         case Warp::Exponential: return half ? GL_R16F : GL_R32F;
@@ -44,8 +51,8 @@ GLenum MomentShadowMap::format() const {
 void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& depth) {
     if (moments_.size() <= i) moments_.resize(i + 1);
     LightMoments& m = moments_[i];
-    const int levels = mipmaps_ > 0.5f ? 1 + static_cast<int>(std::log2(depth.resolution)) : 1;
-    const bool msaa = msaa_ > 0.5f;
+    const int levels = mipmaps_ ? 1 + static_cast<int>(std::log2(depth.resolution)) : 1;
+    const bool msaa = msaa_;
     if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format() && m.levels == levels &&
         (m.multisampledDepth.id() != 0) == msaa)
         return;
@@ -95,32 +102,28 @@ void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
     const scene::Light& light = (*frame.lights)[i];
     const int res = m.resolution;
     glViewport(0, 0, res, res);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    const gl::PassState fullscreen = gl::PassState::fullscreen();
+    const gl::PassState msaaDepth = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
     toMoments_.set("uWarp", static_cast<int>(warp_));
     toMoments_.set("uPerspective", space.perspective ? 1 : 0);
     toMoments_.set("uNear", space.near);
     toMoments_.set("uFar", space.far);
     toMoments_.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));
-    const int radius = static_cast<int>(std::lround(blurRadius_));
+    const int radius = blurRadius_;
     const bool msaa = m.multisampledDepth.id() != 0;
     toMoments_.set("uSamples", msaa ? 4 : 0);
     for (std::size_t f = 0; f < m.momentTargets.size(); ++f) {
         if (msaa) {  // the opaque casters again, into the 4x multisampled depth map of this face
+            const gl::ScopedPassState state(msaaDepth);
             m.multisampledTarget.bind();
             const float farDepth = 1.0f;
             glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
-            glEnable(GL_DEPTH_TEST);
-            glDepthMask(GL_TRUE);
-            glEnable(GL_POLYGON_OFFSET_FILL);
-            glPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
             maps_.depthProgram().set("uLightViewProj", space.viewProj[f]);
             frame.drawCasters(maps_.depthProgram(), Casters::Opaque);
-            glDisable(GL_POLYGON_OFFSET_FILL);
-            glDisable(GL_DEPTH_TEST);
             fullscreenVao_.bind();
             m.multisampledDepth.bind(1);
         }
+        const gl::ScopedPassState state(fullscreen);
         m.momentTargets[f].bind();
         toMoments_.use();
         depthSampler_.bind(0);
@@ -141,15 +144,14 @@ void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
         }
     }
     if (m.levels > 1) glGenerateTextureMipmap(m.moments.id());
-    glEnable(GL_DEPTH_TEST);
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);
     gl::DebugGroup group("moments");
     fullscreenVao_.bind();
-    for (std::size_t i = 0; i < maps_.lightCount(); ++i) {
-        if (maps_.slot(i) < 0) continue;
+    for (std::size_t i = 0; i < maps_.slots().size(); ++i) {
+        if (!maps_.slots().shadowed(i)) continue;
         ensure(i, maps_.maps(i));
         convert(i, frame);
     }
@@ -157,9 +159,9 @@ void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
 
 void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
-    for (std::size_t i = 0; i < maps_.lightCount() && i < moments_.size(); ++i) {
-        if (maps_.slot(i) < 0 || !moments_[i].moments.id()) continue;
-        moments_[i].moments.bind(maps_.rawUnit(i));
+    for (std::size_t i = 0; i < maps_.slots().size() && i < moments_.size(); ++i) {
+        if (!maps_.slots().shadowed(i) || !moments_[i].moments.id()) continue;
+        moments_[i].moments.bind(static_cast<GLuint>(maps_.slots().rawUnit(i)));
     }
     lighting.set("uWarp", static_cast<int>(warp_));
     lighting.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));

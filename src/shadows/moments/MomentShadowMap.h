@@ -5,6 +5,7 @@
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/moments/MomentWarp.h"
 
 namespace penumbra::shadows {
 
@@ -14,7 +15,11 @@ namespace penumbra::shadows {
 // translucent casters comes from the shared tint map.
 class MomentShadowMap final : public ShadowTechnique {
 public:
-    enum class Warp { Variance = 0, Exponential = 1, ExponentialVariance2 = 2, ExponentialVariance4 = 3, Moments4 = 4 };
+    enum class Warp {
+        Variance = gpu::kWarpVariance, Exponential = gpu::kWarpExponential,
+        ExponentialVariance2 = gpu::kWarpExponentialVariance2, ExponentialVariance4 = gpu::kWarpExponentialVariance4,
+        Moments4 = gpu::kWarpMoments4
+    };
     MomentShadowMap(std::string name, Warp warp);
 
     std::string name() const override { return name_; }
@@ -23,7 +28,9 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;
-    std::vector<Parameter> parameters() override;
+
+protected:
+    std::vector<Parameter> declareParameters() override;
 
 private:
     struct LightMoments {
@@ -44,7 +51,9 @@ private:
 
     std::string name_;
     Warp warp_;
-    float blurRadius_ = 2, fp16_ = 0, mipmaps_ = 1, msaa_ = 0, positiveExponent_, negativeExponent_ = 5;
+    int blurRadius_ = 2;
+    bool fp16_ = false, mipmaps_ = true, msaa_ = false;
+    float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;

@@ -1,8 +1,9 @@
 // Filterable shadow maps: the map stores moments of the occluder depth distribution, filtered
 // like any texture (blur, mipmaps, anisotropy), and the lookup bounds the lit fraction.
-#include "shaders/common/shadow_filtering.glsl"
+#include "src/shadows/common/glsl/shadow_filtering.glsl"
+#include "src/shadows/moments/MomentWarp.h"
 
-uniform int uWarp;              // as shaders/passes/moments.frag
+uniform int uWarp;              // as src/shadows/moments/moments.frag
 uniform vec2 uExponents;        // c+, c-
 uniform float uMinVariance;
 uniform float uBleedReduction;  // Lauritzen's light-bleeding reduction: linstep(amount, 1, p_max)
@@ -41,15 +42,15 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     float t = linearShadowDepth(light, s.depth);
     float x = 2.0 * t - 1.0;
     float lit;
-    if (uWarp == 0) {
+    if (uWarp == kWarpVariance) {
         lit = chebyshev(m.xy, x, uMinVariance);
-    } else if (uWarp == 1) {
+    } else if (uWarp == kWarpExponential) {
         lit = clamp(m.x * exp(-uExponents.x * x), 0.0, 1.0);
-    } else if (uWarp == 2 || uWarp == 3) {
+    } else if (uWarp == kWarpExponentialVariance2 || uWarp == kWarpExponentialVariance4) {
         // Variance is warped too: scale the minimum by the warp's slope squared.
         float p = exp(uExponents.x * x);
         lit = chebyshev(m.xy, p, uMinVariance * pow(uExponents.x * p, 2.0));
-        if (uWarp == 3) {
+        if (uWarp == kWarpExponentialVariance4) {
             float n = -exp(-uExponents.y * x);
             lit = min(lit, chebyshev(m.zw, n, uMinVariance * pow(uExponents.y * n, 2.0)));
         }

@@ -1,6 +1,6 @@
 #include "shadows/pcf/PercentageCloserFilter.h"
 
-#include "render/Bindings.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,75 +9,10 @@
 
 namespace penumbra::shadows {
 
-namespace {
-
-// Bridson 2007 in the square [-1,1]^2 restricted to the unit disk.
-std::vector<glm::vec2> bridson(float r, std::mt19937& rng) {
-    const int k = 30;
-    const float cell = r / std::sqrt(2.0f);
-    const int n = static_cast<int>(std::ceil(2.0f / cell));
-    std::vector<int> grid(static_cast<std::size_t>(n * n), -1);
-    std::vector<glm::vec2> points, active;
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    auto cellOf = [&](glm::vec2 p) {
-        return glm::ivec2(std::clamp(static_cast<int>((p.x + 1) / cell), 0, n - 1),
-                          std::clamp(static_cast<int>((p.y + 1) / cell), 0, n - 1));
-    };
-    auto fits = [&](glm::vec2 p) {
-        if (glm::length(p) > 1.0f) return false;
-        const glm::ivec2 c = cellOf(p);
-        for (int y = std::max(0, c.y - 2); y <= std::min(n - 1, c.y + 2); ++y)
-            for (int x = std::max(0, c.x - 2); x <= std::min(n - 1, c.x + 2); ++x) {
-                const int i = grid[static_cast<std::size_t>(y * n + x)];
-                if (i >= 0 && glm::length(points[static_cast<std::size_t>(i)] - p) < r) return false;
-            }
-        return true;
-    };
-    auto add = [&](glm::vec2 p) {
-        const glm::ivec2 c = cellOf(p);
-        grid[static_cast<std::size_t>(c.y * n + c.x)] = static_cast<int>(points.size());
-        points.push_back(p);
-        active.push_back(p);
-    };
-    add({0.0f, 0.0f});
-    while (!active.empty()) {
-        const std::size_t pick = static_cast<std::size_t>(unit(rng) * static_cast<float>(active.size())) % active.size();
-        const glm::vec2 base = active[pick];
-        bool found = false;
-        for (int t = 0; t < k && !found; ++t) {
-            const float a = unit(rng) * glm::two_pi<float>(), d = r * (1.0f + unit(rng));
-            const glm::vec2 p = base + d * glm::vec2(std::cos(a), std::sin(a));
-            if (fits(p)) {
-                add(p);
-                found = true;
-            }
-        }
-        if (!found) active.erase(active.begin() + static_cast<long>(pick));
-    }
-    return points;
-}
-
-}  // namespace
-
-std::vector<glm::vec2> poissonDisk(int count, std::uint32_t seed) {
-    // The densest packing of `count` disks in the unit disk has spacing ~ sqrt(pi / count)
-    // (hexagonal: 0.91 coverage); start there and shrink until enough points fit.
-    float r = 1.7f / std::sqrt(static_cast<float>(count));
-    for (int attempt = 0; attempt < 200; ++attempt, r *= 0.97f) {
-        std::mt19937 rng(seed);
-        std::vector<glm::vec2> pts = bridson(r, rng);
-        if (static_cast<int>(pts.size()) >= count) {
-            pts.resize(static_cast<std::size_t>(count));
-            return pts;
-        }
-    }
-    return std::vector<glm::vec2>(static_cast<std::size_t>(count), glm::vec2(0.0f));
-}
-
 PercentageCloserFilter::PercentageCloserFilter(std::string name, Kernel kernel, int taps)
-    : name_(std::move(name)), kernel_(kernel), taps_(static_cast<float>(taps)), poisson_(poissonDisk(32)) {
+    : name_(std::move(name)), kernel_(kernel), taps_(taps) {
     if (kernel == Kernel::Bilinear) maps_.setFiltering(GL_LINEAR);
-    if (kernel == Kernel::Grid || kernel == Kernel::Gaussian) kernelSize_ = static_cast<float>(taps);
+    if (kernel == Kernel::Grid || kernel == Kernel::Gaussian) kernelSize_ = taps;
     if (kernel == Kernel::Jitter) {
         // 32x32 pixels x (taps/2) layers; each layer holds two jittered strata of an
         // sqrt(taps) x sqrt(taps) grid, warped onto the disk by x = sqrt(v) cos 2πu, y = sqrt(v) sin 2πu.
@@ -104,27 +39,29 @@ PercentageCloserFilter::PercentageCloserFilter(std::string name, Kernel kernel, 
     }
 }
 
-std::vector<Parameter> PercentageCloserFilter::parameters() {
-    std::vector<Parameter> p{{"radius_texels", &radiusTexels_, 0.0f, 16.0f},
-                             {"radius_world", &radiusWorld_, 0.0f, 2.0f},
-                             {"receiver_plane_bias", &receiverPlane_, 0.0f, 1.0f}};
-    if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian) p.push_back({"kernel_size", &kernelSize_, 1.0f, 9.0f});
+std::vector<Parameter> PercentageCloserFilter::declareParameters() {
+    std::vector<Parameter> p{
+        Parameter::real("radius_texels", radiusTexels_, 0.0f, 16.0f, "filter radius in shadow-map texels"),
+        Parameter::real("radius_world", radiusWorld_, 0.0f, 2.0f, "> 0: filter radius in world units instead of texels"),
+        Parameter::flag("receiver_plane_bias", receiverPlane_,
+                        "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)")};
+    if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian)
+        p.push_back(Parameter::integer("kernel_size", kernelSize_, 1, 9, "N of the N x N grid"));
     if (kernel_ == Kernel::Poisson || kernel_ == Kernel::Random || kernel_ == Kernel::Rotated || kernel_ == Kernel::Adaptive)
-        p.push_back({"taps", &taps_, 4.0f, 32.0f});
+        p.push_back(Parameter::integer("taps", taps_, 4, PoissonDisk::kPoints, "taps per lookup"));
     return p;
 }
 
 void PercentageCloserFilter::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
     lighting.set("uKernel", static_cast<int>(kernel_));
-    lighting.set("uKernelSize", static_cast<int>(std::lround(kernelSize_)));
-    lighting.set("uTaps", std::clamp(static_cast<int>(std::lround(taps_)), 1, 32));
+    lighting.set("uKernelSize", kernelSize_);
+    lighting.set("uTaps", std::clamp(taps_, 1, PoissonDisk::kPoints));
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uRadiusWorld", radiusWorld_);
-    lighting.set("uReceiverPlane", receiverPlane_ > 0.5f ? 1 : 0);
-    glProgramUniform2fv(lighting.id(), lighting.location("uPoisson[0]"), static_cast<GLsizei>(poisson_.size()),
-                        &poisson_[0].x);
-    if (jitter_.id()) jitter_.bind(render::kUnitJitter);
+    lighting.set("uReceiverPlane", receiverPlane_ ? 1 : 0);
+    poisson_.upload(lighting);
+    if (jitter_.id()) jitter_.bind(gpu::kUnitJitter);
 }
 
 }  // namespace penumbra::shadows

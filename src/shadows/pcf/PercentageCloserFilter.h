@@ -2,17 +2,20 @@
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
-
-#include <glm/glm.hpp>
-#include <vector>
+#include "shadows/common/PoissonDisk.h"
+#include "shadows/pcf/PcfKernel.h"
 
 namespace penumbra::shadows {
 
-// Fixed-size penumbra: PCF over one of the kernels of shaders' pcf/lookup.glsl. Poisson points
-// come from Bridson's algorithm at start-up; the jitter texture is built once.
+// Fixed-size penumbra: PCF over one of the kernels of pcf/lookup.glsl. The jitter texture is
+// built once.
 class PercentageCloserFilter final : public ShadowTechnique {
 public:
-    enum class Kernel { Grid = 0, Bilinear, Gaussian, Poisson, Random, Jitter, Dither, Rotated, Adaptive };
+    enum class Kernel {
+        Grid = gpu::kPcfGrid, Bilinear = gpu::kPcfBilinear, Gaussian = gpu::kPcfGaussian, Poisson = gpu::kPcfPoisson,
+        Random = gpu::kPcfRandom, Jitter = gpu::kPcfJitter, Dither = gpu::kPcfDither, Rotated = gpu::kPcfRotated,
+        Adaptive = gpu::kPcfAdaptive
+    };
     PercentageCloserFilter(std::string name, Kernel kernel, int taps);
 
     std::string name() const override { return name_; }
@@ -21,23 +24,21 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override { return maps_.debugViews(); }
-    std::vector<Parameter> parameters() override;
+
+protected:
+    std::vector<Parameter> declareParameters() override;
 
 private:
     std::string name_;
     Kernel kernel_;
-    float taps_;
-    float kernelSize_ = 3.0f;
+    int taps_;
+    int kernelSize_ = 3;
     float radiusTexels_ = 1.5f;
     float radiusWorld_ = 0.0f;
-    float receiverPlane_ = 1.0f;
-    std::vector<glm::vec2> poisson_;
+    bool receiverPlane_ = true;
+    PoissonDisk poisson_;
     gl::Texture jitter_;
     DepthAndTintMaps maps_;
 };
-
-// `count` points in the unit disk at least `minDistance` apart, by Bridson's fast Poisson-disk
-// sampling (SIGGRAPH 2007 sketch); the radius shrinks until `count` points fit. Deterministic.
-std::vector<glm::vec2> poissonDisk(int count, std::uint32_t seed = 1);
 
 }  // namespace penumbra::shadows

@@ -1,6 +1,7 @@
 #include "shadows/planar/PlanarProjectedShadows.h"
 
 #include "gl/Debug.h"
+#include "gl/PassState.h"
 
 #include <cmath>
 
@@ -10,41 +11,36 @@ PlanarProjectedShadows::PlanarProjectedShadows() {
     flattened_ = gl::Program::build({.vertex = "src/shadows/planar/planar.vert", .fragment = "src/shadows/planar/planar.frag"});
 }
 
-std::vector<Parameter> PlanarProjectedShadows::parameters() {
-    return {{"receiver", &receiverObject_, -1, 1e6f},      {"clip_to_receiver", &clipToReceiver_, 0, 1},
-            {"stencil_once", &stencilOnce_, 0, 1},        {"naive", &naive_, 0, 1},
-            {"opacity", &opacity_, 0, 1}};
+std::vector<Parameter> PlanarProjectedShadows::declareParameters() {
+    return {Parameter::integer("receiver", receiverObject_, -1, 1000000, "receiver object index; -1: the largest flat object"),
+            Parameter::flag("clip_to_receiver", clipToReceiver_, "stencil keeps shadows on the receiver's visible pixels"),
+            Parameter::flag("stencil_once", stencilOnce_, "stencil darkens each pixel once where casters overlap"),
+            Parameter::flag("naive", naive_, "divide by w first: casters behind the light or under the plane cast too"),
+            Parameter::real("opacity", opacity_, 0, 1, "how dark the shadow is")};
 }
 
 void PlanarProjectedShadows::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // coloured tint, and the fallback for glass the pre-pass does not see
     if (!frame.scene || !frame.camera || frame.viewport.x <= 0) return;
-    receiver_ = findReceiverPlane(*frame.scene, frame.time, static_cast<int>(std::lround(receiverObject_)));
+    receiver_ = findReceiverPlane(*frame.scene, frame.time, receiverObject_);
     gl::DebugGroup group("planar shadows");
     mask_.begin(frame);
     const auto& lights = *frame.lights;
     for (std::size_t i = 0; i < lights.size(); ++i) {
-        const bool clip = clipToReceiver_ > 0.5f;
+        const bool clip = clipToReceiver_;
         mask_.beginLight(static_cast<int>(i), clip ? 0 : 1);  // without the receiver mask every pixel may take a shadow
         if (!lights[i].shadow.enabled || !receiver_) continue;
-        glEnable(GL_STENCIL_TEST);
-        glDepthMask(GL_FALSE);
-        glEnable(GL_DEPTH_TEST);
         if (clip) {  // stencil 1 where the receiver is the visible surface
-            glDepthFunc(GL_LEQUAL);
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            glStencilFunc(GL_ALWAYS, 1, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            gl::PassState marking = gl::PassState::depthOnly().withStencil({.ref = 1, .mask = 0xff, .depthPass = GL_REPLACE});
+            marking.depthFunc = GL_LEQUAL;
+            marking.depthWrite = false;
+            marking.colorWrite = glm::bvec4(false);
+            const gl::ScopedPassState state(marking);
             const gl::Program& surfaces = maps_.depthProgram();  // plain positions; the light's matrix swapped for the camera's
             surfaces.set("uLightViewProj", mask_.viewProj());
             frame.drawSurfaces(surfaces, receiver_->object);
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         flattenCasters(frame, lights[i]);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_STENCIL_TEST);
-        glDisable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ZERO);
     }
 }
 
@@ -54,23 +50,23 @@ void PlanarProjectedShadows::flattenCasters(const ShadowFrame& frame, const scen
     if (glm::dot(plane, L) < 0.0f) plane = -plane;  // the light on the positive side
     if (glm::dot(plane, L) <= 0.0f) return;           // light in the plane: no projection
     // Shadows sit on the receiver: drawn over it (polygon offset towards the camera), hidden by
-    // what stands in front. Stencil "equal 1, then increment" lets each pixel darken once.
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -4.0f);
-    glStencilFunc(GL_EQUAL, 1, 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, stencilOnce_ > 0.5f ? GL_INCR : GL_KEEP);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // visibility *= 1 - opacity
+    // what stands in front. Stencil "equal 1, then increment" lets each pixel darken once; the
+    // blend multiplies visibility by 1 - opacity.
+    gl::PassState flatten = gl::PassState::depthOnly()
+                                .withPolygonOffset(-1.0f, -4.0f)
+                                .withStencil({.func = GL_EQUAL, .ref = 1, .mask = 0xff, .depthPass = stencilOnce_ ? GL_INCR : GL_KEEP})
+                                .withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA));
+    flatten.depthFunc = GL_LEQUAL;
+    flatten.depthWrite = false;
+    const gl::ScopedPassState state(flatten);
     flattened_.set("uViewProj", mask_.viewProj());
     flattened_.set("uFlatten", planarShadowMatrix(plane, L));
     flattened_.set("uPlane", plane);
     flattened_.set("uLight", L);
-    flattened_.set("uNaive", naive_ > 0.5f ? 1 : 0);
+    flattened_.set("uNaive", naive_ ? 1 : 0);
     flattened_.set("uOpacity", opacity_);
     flattened_.set("uPlaneEpsilon", 1e-4f * std::sqrt(receiver_->area));
     frame.drawCasters(flattened_, Casters::Opaque);
-    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 void PlanarProjectedShadows::bindLookup(const gl::Program& lighting) const {

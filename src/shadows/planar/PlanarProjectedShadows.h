@@ -16,17 +16,21 @@ class PlanarProjectedShadows final : public ShadowTechnique {
 public:
     PlanarProjectedShadows();
     std::string name() const override { return "planar"; }
-    std::filesystem::path lookupShader() const override { return "src/shadows/common/screen_mask_lookup.glsl"; }
+    std::filesystem::path lookupShader() const override { return "src/shadows/common/glsl/screen_mask_lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + mask_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override { return mask_.debugViews(); }
-    std::vector<Parameter> parameters() override;
     const std::optional<ReceiverPlane>& receiver() const { return receiver_; }
+
+protected:
+    std::vector<Parameter> declareParameters() override;
 
 private:
     void flattenCasters(const ShadowFrame& frame, const scene::Light& light);
-    float receiverObject_ = -1, clipToReceiver_ = 1, stencilOnce_ = 1, naive_ = 0, opacity_ = 1;
+    int receiverObject_ = -1;
+    bool clipToReceiver_ = true, stencilOnce_ = true, naive_ = false;
+    float opacity_ = 1;
     std::optional<ReceiverPlane> receiver_;
     gl::Program flattened_;
     ScreenShadowMask mask_;

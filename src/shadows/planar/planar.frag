@@ -1,7 +1,7 @@
 #version 450 core
 // Darkens the receiver by uOpacity where a flattened caster lands (dst *= 1 - alpha). Only what
 // lies between the plane and the light casts, unless uNaive shows the method's classic errors.
-#include "../../../shaders/common/material.glsl"
+#include "shaders/common/material.glsl"
 in vec2 vUv;
 in float vAbovePlane;
 in float vBelowLight;

@@ -1,6 +1,7 @@
 #include "shadows/volumes/ShadowVolumes.h"
 
 #include "gl/Debug.h"
+#include "gl/PassState.h"
 #include "util/Log.h"
 
 namespace penumbra::shadows {
@@ -44,11 +45,11 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
     const bool point = light.type != scene::Light::Type::Directional;
     volumes_.set("uLight", point ? glm::vec4(light.position, 1.0f) : glm::vec4(glm::normalize(light.direction), 0.0f));
     volumes_.set("uViewProj", mask_.viewProj());
-    volumes_.set("uCaps", zFail_ > 0.5f ? 1 : 0);
+    volumes_.set("uCaps", zFail_ ? 1 : 0);
     // Past every receiver: the scene's diagonal plus the light's distance to the scene.
     const float diagonal = glm::length(frame.sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
-    volumes_.set("uExtrusion", infinite_ > 0.5f ? 0.0f : 2.0f * (diagonal + lightDistance));
+    volumes_.set("uExtrusion", infinite_ ? 0.0f : 2.0f * (diagonal + lightDistance));
     volumes_.use();
     const scene::Scene& scene = *frame.scene;
     for (const auto& obj : scene.objects) {
@@ -76,29 +77,23 @@ void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
         if (!lights[i].shadow.enabled) continue;
         // Count volume faces per pixel: z-fail counts those behind the visible surface (back +1,
         // front -1), robust when the camera sits inside a volume; z-pass those in front of it
-        // (front +1, back -1), which breaks there. Non-zero: in shadow.
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_FALSE);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glEnable(GL_DEPTH_CLAMP);  // the far cap and the sides reach infinity
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xff);
-        if (zFail_ > 0.5f) {
-            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-        } else {
-            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+        // (front +1, back -1), which breaks there. Non-zero: in shadow. Depth clamp: the far cap
+        // and the sides reach past the far plane.
+        gl::PassState counting = gl::PassState::depthOnly();
+        counting.depthWrite = false;
+        counting.colorWrite = glm::bvec4(false);
+        counting.depthClamp = true;
+        counting.stencilTest = true;
+        const gl::StencilFace up = zFail_ ? gl::StencilFace{.depthFail = GL_INCR_WRAP} : gl::StencilFace{.depthPass = GL_INCR_WRAP};
+        const gl::StencilFace down = zFail_ ? gl::StencilFace{.depthFail = GL_DECR_WRAP} : gl::StencilFace{.depthPass = GL_DECR_WRAP};
+        counting.stencilBack = zFail_ ? up : down;
+        counting.stencilFront = zFail_ ? down : up;
+        {
+            const gl::ScopedPassState state(counting);
+            drawVolumes(frame, lights[i]);
         }
-        drawVolumes(frame, lights[i]);
-        glDisable(GL_DEPTH_CLAMP);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDepthMask(GL_TRUE);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         mask_.shadowWhereStencilNonZero();
     }
-    glDisable(GL_STENCIL_TEST);
 }
 
 void ShadowVolumes::bindLookup(const gl::Program& lighting) const {

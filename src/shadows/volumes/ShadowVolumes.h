@@ -18,12 +18,17 @@ class ShadowVolumes final : public ShadowTechnique {
 public:
     ShadowVolumes();
     std::string name() const override { return "shadow-volumes"; }
-    std::filesystem::path lookupShader() const override { return "src/shadows/common/screen_mask_lookup.glsl"; }
+    std::filesystem::path lookupShader() const override { return "src/shadows/common/glsl/screen_mask_lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override { return mask_.debugViews(); }
-    std::vector<Parameter> parameters() override { return {{"zfail", &zFail_, 0, 1}, {"infinite", &infinite_, 0, 1}}; }
+
+protected:
+    std::vector<Parameter> declareParameters() override {
+        return {Parameter::flag("zfail", zFail_, "z-fail counting with caps (Carmack's reverse); off: z-pass"),
+                Parameter::flag("infinite", infinite_, "extrude to infinity (w = 0) instead of just past the scene")};
+    }
 
 private:
     struct GpuAdjacency {
@@ -33,7 +38,7 @@ private:
     };
     void upload(const ShadowFrame& frame);
     void drawVolumes(const ShadowFrame& frame, const scene::Light& light);
-    float zFail_ = 1, infinite_ = 0;
+    bool zFail_ = true, infinite_ = false;
     const scene::Scene* uploaded_ = nullptr;
     std::vector<GpuAdjacency> meshes_;
     gl::Program volumes_;

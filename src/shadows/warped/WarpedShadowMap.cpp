@@ -1,7 +1,7 @@
 #include "shadows/warped/WarpedShadowMap.h"
 
 #include "gl/Debug.h"
-#include "render/Bindings.h"
+#include "gpu/ShaderContract.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,32 +9,34 @@
 namespace penumbra::shadows {
 
 WarpedShadowMap::WarpedShadowMap(std::string name, Warp warp, int cols, int rows)
-    : name_(std::move(name)), warp_(warp), cols_(static_cast<float>(cols)), rows_(static_cast<float>(rows)) {}
+    : name_(std::move(name)), warp_(warp), cols_(cols), rows_(rows) {}
 
-std::vector<Parameter> WarpedShadowMap::parameters() {
-    std::vector<Parameter> p = {{"cols", &cols_, 1, 4}, {"rows", &rows_, 1, 4}};
+std::vector<Parameter> WarpedShadowMap::declareParameters() {
+    std::vector<Parameter> p = {Parameter::integer("cols", cols_, 1, 4, "screen tiles across, each with its own warped map (Plachý 2012 §3.5)"),
+                                Parameter::integer("rows", rows_, 1, 4, "screen tiles down")};
     if (warp_ == Warp::Lispsm) {
-        p.push_back({"n_scale", &nScale_, 0.05f, 20.0f});
-        p.push_back({"min_sin_gamma", &minSinGamma_, 0.0f, 1.0f});
-        p.push_back({"near_from_camera", &nearFromCamera_, 0, 1});
+        p.push_back(Parameter::real("n_scale", nScale_, 0.05f, 20.0f, "factor on Wimmer's optimal n"));
+        p.push_back(Parameter::real("min_sin_gamma", minSinGamma_, 0.0f, 1.0f,
+                                    "below this sine of the view-light angle: uniform (orthographic) map"));
+        p.push_back(Parameter::flag("near_from_camera", nearFromCamera_, "z_n from the camera's near plane (as Wimmer's code), else the body's nearest point"));
     } else {
-        p.push_back({"min_near", &psmMinNear_, 0.001f, 1.0f});
+        p.push_back(Parameter::real("min_near", psmMinNear_, 0.001f, 1.0f, "virtual camera's near plane at least this share of far"));
     }
-    p.push_back({"debug_tint", &debugTint_, 0, 1});
-    p.push_back({"freeze", &freeze_, 0, 1});
+    p.push_back(Parameter::flag("debug_tint", debugTint_, "tint each tile"));
+    p.push_back(Parameter::flag("freeze", freeze_, "stop refitting, to fly away and look"));
     return p;
 }
 
 void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // other lights, and every light's coloured tint
     const auto& lights = *frame.lights;
-    light_ = DepthAndTintMaps::firstShadowedSun(lights);
+    light_ = frame.slots->sun;
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
     const scene::Camera& cam = *frame.camera;
-    const glm::ivec2 grid(std::clamp(static_cast<int>(std::lround(cols_)), 1, 4), std::clamp(static_cast<int>(std::lround(rows_)), 1, 4));
+    const glm::ivec2 grid(std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4));
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
-    if (freeze_ < 0.5f || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) {
+    if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) {
         grid_ = grid;
         // Tiles reach only as far as the scene does: a 1 km far plane must not thin the warp.
         const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
@@ -49,7 +51,7 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
             for (int c = 0; c < grid.x; ++c) {
                 const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
                 WarpedView v = warp_ == Warp::Lispsm
-                                   ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_ > 0.5f})
+                                   ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_})
                                    : fitPsm(sun, cam, tile, where, psmMinNear_);
                 if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
                     v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
@@ -74,7 +76,7 @@ void WarpedShadowMap::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
     lighting.set("uWarpedLight", warped_.empty() ? -1 : light_);
     if (light_ < 0 || warped_.empty()) return;
-    warped_.bind(render::kUnitLayered);
+    warped_.bind(gpu::kUnitLayered);
     std::vector<glm::mat4> matrices;
     for (const auto& v : views_) matrices.push_back(v.shadowMatrix);
     glProgramUniformMatrix4fv(lighting.id(), lighting.location("uWarpedMatrix[0]"), static_cast<GLsizei>(matrices.size()),
@@ -82,7 +84,7 @@ void WarpedShadowMap::bindLookup(const gl::Program& lighting) const {
     lighting.set("uWarpedGrid", grid_);
     lighting.set("uWarpedCameraViewProj", cameraViewProj_);
     lighting.set("uWarpedResolution", static_cast<float>(resolution_));
-    lighting.set("uWarpedDebug", debugTint_ > 0.5f ? 1 : 0);
+    lighting.set("uWarpedDebug", debugTint_ ? 1 : 0);
 }
 
 std::vector<DebugView> WarpedShadowMap::debugViews() const {

@@ -8,7 +8,7 @@ namespace penumbra::shadows {
 
 // View-dependent shadow maps for the first shadowed directional light: LiSPSM or PSM
 // (WarpFit.h), over the whole view or per tile of a cols x rows grid over the screen, each tile's
-// sub-frustum with its own warped map (seed 002 §3.5, its -cw/-ch). All tiles render in one
+// sub-frustum with its own warped map (Plachý 2012 §3.5, its -cw/-ch). All tiles render in one
 // layered pass. Other lights, and every light's coloured tint, use the shared per-light maps.
 class WarpedShadowMap final : public ShadowTechnique {
 public:
@@ -20,14 +20,17 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + warped_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override;
-    std::vector<Parameter> parameters() override;
     const std::vector<WarpedView>& views() const { return views_; }
+
+protected:
+    std::vector<Parameter> declareParameters() override;
 
 private:
     std::string name_;
     Warp warp_;
-    float cols_, rows_, nScale_ = 1.0f, minSinGamma_ = 0.05f, psmMinNear_ = 0.02f, debugTint_ = 0, freeze_ = 0,
-          nearFromCamera_ = 1;
+    int cols_, rows_;
+    float nScale_ = 1.0f, minSinGamma_ = 0.05f, psmMinNear_ = 0.02f;
+    bool debugTint_ = false, freeze_ = false, nearFromCamera_ = true;
     int light_ = -1, resolution_ = 0;
     glm::ivec2 grid_{1, 1};
     glm::mat4 cameraViewProj_{1.0f};

@@ -2,9 +2,9 @@
 // hard lookup. The map's texel size varies across it, so the bias is applied in world space:
 // the receiver moves towards the light by (bias + slope * tan θ) texels and along its normal by
 // normal_offset texels, each texel measured at the receiver through the projective map.
-#include "shaders/common/shadow_filtering.glsl"
+#include "src/shadows/common/glsl/shadow_filtering.glsl"
 
-layout(binding = UNIT_LAYERED) uniform sampler2DArrayShadow uWarped;
+layout(binding = kUnitLayered) uniform sampler2DArrayShadow uWarped;
 uniform int uWarpedLight;        // index of the warped light, -1: none
 uniform mat4 uWarpedMatrix[16];  // world -> [0,1]^3 (after the divide by w), per tile
 uniform ivec2 uWarpedGrid;       // cols, rows

@@ -1,5 +1,6 @@
-#include "render/BatchRender.h"
+#include "app/RenderCommand.h"
 
+#include "app/OutputFiles.h"
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "render/Offscreen.h"
@@ -8,10 +9,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
-namespace penumbra::render {
+namespace penumbra::app {
+
+using render::PassTimes;
 
 namespace fs = std::filesystem;
 
@@ -22,20 +24,11 @@ BatchResult renderBatch(const BatchJob& job) {
     auto context = platform::EglContext::create(job.eglPlatform);
     gl::enableDebugOutput();
 
-    RenderOptions options;
-    options.technique = !job.technique.empty() ? job.technique : (!scene.technique.empty() ? scene.technique : "hard");
-    options.shadowResolution = job.shadowResolution;
-    options.debugOverlay = job.overlay;
-    options.parameters = job.parameters;
+    render::RenderOptions options = job.render;
     options.strictParameters = true;
-    options.transparency = transparencyFromString(job.transparency);
-    options.peelLayers = job.peelLayers;
-    Renderer renderer(scene, options);
-    OffscreenTarget target(job.width, job.height);
-
-    std::error_code ec;
-    fs::create_directories(job.outDir, ec);
-    if (ec) throw std::runtime_error(job.outDir.string() + ": cannot create output directory: " + ec.message());
+    render::Renderer renderer(scene, options);
+    render::OffscreenTarget target(job.width, job.height);
+    createOutputDirectory(job.outDir);
 
     // One untimed warm-up frame: llvmpipe compiles shaders at first draw, and its first timer
     // query of a context reads garbage.
@@ -74,10 +67,10 @@ BatchResult renderBatch(const BatchJob& job) {
         {"egl_platform", context->platformName()},
         {"scene", job.scene.string()},
         {"technique", renderer.technique().name()},
-        {"transparency", job.transparency},
+        {"transparency", render::toString(job.render.transparency)},
         {"parameters", [&] {
              nlohmann::json p = nlohmann::json::object();
-             for (const auto& param : renderer.technique().parameters()) p[param.name] = *param.value;
+             for (const auto& param : renderer.technique().parameters()) p[param.name] = param.number();
              return p;
          }()},
         {"width", job.width},
@@ -93,10 +86,8 @@ BatchResult renderBatch(const BatchJob& job) {
         {"frames", frames},
     };
     result.statsFile = job.outDir / "stats.json";
-    std::ofstream out(result.statsFile);
-    out << stats.dump(2) << "\n";
-    if (!out) throw std::runtime_error(result.statsFile.string() + ": cannot write");
+    writeJson(result.statsFile, stats);
     return result;
 }
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

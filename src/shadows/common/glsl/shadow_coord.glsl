@@ -2,7 +2,7 @@
 // (SPEC §3 "Shadow maps": constant, slope-scaled and normal-offset bias). All three are in
 // units of the world size of one shadow texel at the receiver, so their defaults hold at any
 // scene scale and map resolution.
-#include "lights.glsl"
+#include "shaders/common/lights.glsl"
 
 struct ShadowCoord {
     vec3 uv;       // 2D lights: texture coordinates (xy) ; point lights: direction from the light
@@ -13,7 +13,7 @@ struct ShadowCoord {
 // Distance along the light's view axis (perspective lights) that sets the texel footprint.
 float lightViewDepth(LightData L, vec3 P) {
     vec3 d = P - L.positionNear.xyz;
-    if (int(L.colorType.w) == LIGHT_POINT) { vec3 a = abs(d); return max(a.x, max(a.y, a.z)); }
+    if (int(L.colorType.w) == kLightPoint) { vec3 a = abs(d); return max(a.x, max(a.y, a.z)); }
     return dot(d, L.directionFar.xyz);
 }
 
@@ -33,7 +33,7 @@ ShadowCoord shadowCoord(LightData L, vec3 P, vec3 N, float NdotL) {
 
     float n = L.positionNear.w, f = L.directionFar.w;
     ShadowCoord sc;
-    if (int(L.colorType.w) == LIGHT_POINT) {
+    if (int(L.colorType.w) == kLightPoint) {
         float d = lightViewDepth(L, Po);
         // d(depth)/d(distance) = f n / ((f - n) d^2) converts the world bias to depth units.
         sc.uv = Po - L.positionNear.xyz;

@@ -1,10 +1,12 @@
 #pragma once
 // `penumbra reference` and `penumbra compare`: run a Comparison headless and write its files.
+#include "render/Renderer.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace penumbra::reference {
+namespace penumbra::app {
 
 struct ReportJob {
     std::filesystem::path scene;
@@ -13,11 +15,11 @@ struct ReportJob {
     int samples = 64;  // per pixel, for area lights
     std::filesystem::path outDir;
     std::string eglPlatform = "auto";
-    // compare only:
+    // compare only: the techniques, and the options they all share (shadow resolution, and
+    // parameters applied to every technique that has them).
     std::vector<std::string> techniques;
-    int shadowResolution = 0;
+    render::RenderOptions render;
     int timedFrames = 3;
-    std::vector<std::pair<std::string, float>> parameters;  // applied to every technique that has them
 };
 
 // Writes reference.png, visibility_<i>.png per light and reference.json. Returns exit code.
@@ -26,4 +28,4 @@ int runReference(const ReportJob& job);
 // compare.json, and prints the table. Returns exit code.
 int runCompare(const ReportJob& job);
 
-}  // namespace penumbra::reference
+}  // namespace penumbra::app

@@ -6,9 +6,9 @@
 // CSSM2 agree with this.)
 //   CSSM2: one pass, one ξ per fragment shared by the channels.
 //   CSSM1: one pass per channel (uChannel), independent ξ per channel; opaque casters too.
-#include "../common/material.glsl"
-#include "../common/random.glsl"
-#include "../common/depth.glsl"
+#include "shaders/common/material.glsl"
+#include "shaders/common/random.glsl"
+#include "shaders/common/depth.glsl"
 in vec2 vUv;
 uniform int uPerspective;
 uniform float uNear, uFar;

@@ -1,5 +1,6 @@
-#include "reference/Report.h"
+#include "app/ReferenceCommands.h"
 
+#include "app/OutputFiles.h"
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "reference/Comparison.h"
@@ -7,15 +8,15 @@
 #include "scene/io/SceneFile.h"
 
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
 
-namespace penumbra::reference {
+namespace penumbra::app {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using namespace reference;
 
 namespace {
 
@@ -32,16 +33,8 @@ Session open(const ReportJob& job) {
         throw std::invalid_argument(job.scene.string() + ": the scene has no lights: there are no shadows to compare");
     s.context = platform::EglContext::create(job.eglPlatform);
     gl::enableDebugOutput();
-    std::error_code ec;
-    fs::create_directories(job.outDir, ec);
-    if (ec) throw std::runtime_error(job.outDir.string() + ": cannot create output directory: " + ec.message());
+    createOutputDirectory(job.outDir);
     return s;
-}
-
-void writeJson(const fs::path& file, const json& j) {
-    std::ofstream out(file);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error(file.string() + ": cannot write");
 }
 
 std::string safeName(std::string s) {
@@ -56,11 +49,11 @@ int runReference(const ReportJob& job) {
     Session s = open(job);
     Comparison cmp(s.scene, job.width, job.height, job.time);
     cmp.traceReference(job.samples, true);
-    render::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
+    writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
     json lights = json::array();
     for (std::size_t l = 0; l < s.scene.lights.size(); ++l) {
         const std::string file = "visibility_" + std::to_string(l) + "_" + safeName(s.scene.lights[l].name) + ".png";
-        render::writePng(job.outDir / file, job.width, job.height,
+        writePng(job.outDir / file, job.width, job.height,
                          encodeLinear(cmp.referenceVisibility()[l], job.width, job.height));
         lights.push_back({{"name", s.scene.lights[l].name}, {"visibility", file}, {"size", s.scene.lights[l].size}});
     }
@@ -84,18 +77,18 @@ int runCompare(const ReportJob& job) {
     Comparison cmp(s.scene, job.width, job.height, job.time);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());
-    render::writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);
+    writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);
 
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
     std::printf("\n%-14s %9s %9s %11s %9s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
                 "noise", "shadow ms", "frame ms", "MiB");
     for (const auto& name : job.techniques) {
-        const TechniqueScore sc = cmp.evaluate(name, job.shadowResolution, job.timedFrames, job.parameters);
+        const TechniqueScore sc = cmp.evaluate(name, job.render.shadowResolution, job.timedFrames, job.render.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
         heat.push_back(cmp.heatMap(sc));
-        render::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
-        render::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
+        writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
+        writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
         std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
                     sc.colourError, sc.noise, sc.shadowMs, sc.totalMs, mib);
@@ -120,12 +113,12 @@ int runCompare(const ReportJob& job) {
     for (const auto& c : cells) tiles.push_back(&c);
     int mw = 0, mh = 0;
     const auto sideBySide = montage(tiles, tw, 2 * th, std::min<int>(5, static_cast<int>(cells.size())), mw, mh);
-    render::writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
+    writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
 
     writeJson(job.outDir / "compare.json",
               {{"device", platform::glDeviceDescription()}, {"scene", job.scene.string()}, {"width", job.width},
                {"height", job.height}, {"time", job.time}, {"samples", job.samples},
-               {"shadow_resolution", job.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},
+               {"shadow_resolution", job.render.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},
                {"wrong_threshold", VisibilityError::kWrongThreshold}, {"techniques", rows}});
     std::printf("\nreference %.2f s; errors are of light visibility on pixels each light reaches; wrong = off by > %.1f\n",
                 cmp.referenceSeconds(), VisibilityError::kWrongThreshold);
@@ -134,4 +127,4 @@ int runCompare(const ReportJob& job) {
     return 0;
 }
 
-}  // namespace penumbra::reference
+}  // namespace penumbra::app

@@ -3,7 +3,7 @@
 // Depth is stored linear in [0, 1] (half floats would waste their precision on perspective
 // depth); texels with no opaque caster get 1, i.e. white, so translucent surfaces with nothing
 // opaque behind them do not shadow wrongly (the thesis's white-clear fix).
-#include "../common/depth.glsl"
+#include "shaders/common/depth.glsl"
 layout(binding = 0) uniform sampler2D uDepth;
 uniform int uPerspective;
 uniform float uNear, uFar;

@@ -1,34 +1,28 @@
 #pragma once
-// Headless rendering of a frame sequence: PNG frames + stats.json with per-pass GPU times.
+// `penumbra render`: a frame sequence rendered headless (EGL) into PNG frames + stats.json with
+// per-pass GPU times.
 #include "render/Renderer.h"
 
 #include <filesystem>
 #include <string>
-#include <utility>
-#include <vector>
 
-namespace penumbra::render {
+namespace penumbra::app {
 
 struct BatchJob {
     std::filesystem::path scene;  // scene file or bare model
-    std::string technique;        // "" = the scene's choice, else "hard"
-    int shadowResolution = 0;     // 0 = per light
+    render::RenderOptions render;
     int width = 1280, height = 720;
     int frames = 1;
     float startTime = 0.0f;
     float fps = 30.0f;
-    bool overlay = false;
     std::filesystem::path outDir = "out";
     std::string eglPlatform = "auto";
-    std::vector<std::pair<std::string, float>> parameters;  // technique parameters
-    std::string transparency = "sorted-objects";
-    int peelLayers = 4;
 };
 
 struct BatchResult {
     std::string device;
     int frames = 0;
-    PassTimes mean;
+    render::PassTimes mean;
     std::size_t shadowMemoryBytes = 0;
     std::filesystem::path statsFile;
 };
@@ -36,4 +30,4 @@ struct BatchResult {
 // Creates its own EGL context. Throws InputError / ShaderError / std::runtime_error.
 BatchResult renderBatch(const BatchJob& job);
 
-}  // namespace penumbra::render
+}  // namespace penumbra::app

@@ -3,14 +3,14 @@
 // sampler arrays next to cube samplers, and a switch is what a driver would generate anyway.
 // "Raw" samplers read the depth map without comparison (blocker searches) or a technique's
 // filtered moments; explicit gradients keep mipmapped lookups defined in any control flow.
-#include "bindings.glsl"
+#include "src/gpu/ShaderContract.h"
 
-layout(binding = UNIT_SHADOW_2D) uniform sampler2DShadow uShadowDepth[MAX_SHADOW_2D];
-layout(binding = UNIT_TINT_2D) uniform sampler2D uShadowTint[MAX_SHADOW_2D];
-layout(binding = UNIT_RAW_2D) uniform sampler2D uShadowRaw[MAX_SHADOW_2D];
-layout(binding = UNIT_SHADOW_CUBE) uniform samplerCubeShadow uShadowCube[MAX_SHADOW_CUBE];
-layout(binding = UNIT_TINT_CUBE) uniform samplerCube uShadowTintCube[MAX_SHADOW_CUBE];
-layout(binding = UNIT_RAW_CUBE) uniform samplerCube uShadowRawCube[MAX_SHADOW_CUBE];
+layout(binding = kUnitShadow2D) uniform sampler2DShadow uShadowDepth[kMaxShadow2D];
+layout(binding = kUnitTint2D) uniform sampler2D uShadowTint[kMaxShadow2D];
+layout(binding = kUnitRaw2D) uniform sampler2D uShadowRaw[kMaxShadow2D];
+layout(binding = kUnitShadowCube) uniform samplerCubeShadow uShadowCube[kMaxShadowCube];
+layout(binding = kUnitTintCube) uniform samplerCube uShadowTintCube[kMaxShadowCube];
+layout(binding = kUnitRawCube) uniform samplerCube uShadowRawCube[kMaxShadowCube];
 
 #define SLOT_SWITCH_4(EXPR) \
     switch (slot) { case 0: return EXPR(0); case 1: return EXPR(1); case 2: return EXPR(2); default: return EXPR(3); }

@@ -3,7 +3,7 @@
 // rgb = fraction of light passing, multiplied over every layer by blending (dst * src);
 // a = depth of the nearest translucent layer (MIN blending), so receivers in front of it
 // stay untinted.
-#include "../common/material.glsl"
+#include "shaders/common/material.glsl"
 in vec2 vUv;
 layout(location = 0) out vec4 outTransmit;
 void main() {

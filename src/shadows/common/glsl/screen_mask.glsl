@@ -3,8 +3,8 @@
 // answers -1 and the caller falls back to the shadow map.
 #include "shaders/common/depth.glsl"
 
-layout(binding = UNIT_SCREEN_SHADOW) uniform sampler2DArray uScreenMask;
-layout(binding = UNIT_SCREEN_DEPTH) uniform sampler2D uScreenMaskDepth;
+layout(binding = kUnitScreenShadow) uniform sampler2DArray uScreenMask;
+layout(binding = kUnitScreenDepth) uniform sampler2D uScreenMaskDepth;
 uniform vec2 uScreenMaskDepthRange;  // camera near, far
 
 float screenMaskVisibility(int light) {

@@ -2,7 +2,7 @@
 // with taps addressed in shadow-map texels for 2D maps and cube maps alike.
 #include "shadow_coord.glsl"
 #include "shadow_samplers.glsl"
-#include "depth.glsl"
+#include "shaders/common/depth.glsl"
 
 struct ShadowSite {
     int light;
@@ -28,7 +28,7 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s;
     s.light = light;
     s.slot = int(L.cone.w);
-    s.cube = lightType(light) == LIGHT_POINT;
+    s.cube = lightType(light) == kLightPoint;
     ShadowCoord sc = shadowCoord(L, P, N, NdotL);
     s.inside = sc.inside && s.slot >= 0;
     s.coord = s.cube ? sc.uv : vec3(sc.uv.xy, sc.depth);
@@ -103,15 +103,4 @@ float worldShadowDepth(int light, float windowDepth) {
     float n = L.positionNear.w, f = L.directionFar.w;
     if (L.misc.x < 0.5) return n + windowDepth * (f - n);
     return perspectiveViewDepth(windowDepth, n, f);
-}
-
-// Interleaved gradient noise (Jimenez 2014): a cheap per-pixel value with no visible pattern.
-float interleavedGradientNoise(vec2 pixel) {
-    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
-}
-
-// Integer hash (PCG-like) -> [0, 1): per-pixel, per-tap random numbers.
-float hashToUnit(uint x) {
-    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
-    return float(x >> 8) * (1.0 / 16777216.0);
 }

@@ -1,0 +1,64 @@
+#include "app/RenderOptionsCli.h"
+
+#include "shadows/ShadowTechnique.h"
+
+#include <cstdio>
+#include <map>
+
+namespace penumbra::app {
+
+using render::TransparencyMode;
+
+void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderCli which) {
+    if (which.technique)
+        command.add_option("--technique", options.technique, "shadow technique (see `penumbra techniques`)")
+            ->check([](const std::string& name) {
+                return shadows::isKnownTechnique(name) ? std::string()
+                                                       : "unknown shadow technique '" + name + "'; known: " + shadows::knownTechniqueNames();
+            });
+    command.add_option("--shadow-res", options.shadowResolution, "shadow-map resolution for every light")
+        ->check(CLI::Range(16, 16384));
+    command.add_option_function<std::vector<std::string>>(
+        "--param",
+        [&options](const std::vector<std::string>& texts) {
+            for (const auto& text : texts) {
+                try {
+                    options.parameters.push_back(shadows::parseParameter(text));
+                } catch (const std::invalid_argument& e) {
+                    throw CLI::ValidationError("--param", e.what());
+                }
+            }
+        },
+        "technique parameter name=value (repeatable; `penumbra techniques --verbose` lists them)");
+    if (which.overlay) command.add_flag("--overlay", options.debugOverlay, "draw the light-space debug maps over the frame");
+    if (!which.transparency) return;
+    std::map<std::string, TransparencyMode> modes;
+    for (auto m : {TransparencyMode::SortedObjects, TransparencyMode::SortedTriangles, TransparencyMode::DepthPeeling,
+                   TransparencyMode::DualDepthPeeling, TransparencyMode::WeightedBlended, TransparencyMode::Stochastic})
+        modes[render::toString(m)] = m;
+    command.add_option("--transparency", options.transparency, "camera transparency: sorted-objects | sorted-triangles | depth-peeling | dual-depth-peeling | weighted | stochastic")
+        ->transform(CLI::CheckedTransformer(modes));
+    command.add_option("--peel-layers", options.peelLayers, "layers kept by (dual) depth peeling (default 4)")->check(CLI::Range(1, 32));
+}
+
+void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize) {
+    command.add_option("scene", scene, "scene file (.json) or model file; default: the built-in scene");
+    command.add_option_function<std::string>(
+        "--size",
+        [&width, &height](const std::string& text) {
+            int w = 0, h = 0;
+            char tail = 0;
+            if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w <= 0 || h <= 0 || w > 16384 || h > 16384)
+                throw CLI::ValidationError("--size", "expected WxH within 1x1..16384x16384, e.g. 1280x720, got '" + text + "'");
+            width = w;
+            height = h;
+        },
+        std::string("image size WxH (default ") + defaultSize + ")");
+}
+
+void addEglPlatform(CLI::App& command, std::string& platform) {
+    command.add_option("--egl-platform", platform, "auto | surfaceless | device")
+        ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
+}
+
+}  // namespace penumbra::app

@@ -1,0 +1,26 @@
+#pragma once
+// The command-line options every subcommand that renders shares, registered by one helper so
+// that `view`, `render`, `compare` and `bench` spell and check them alike. They fill a
+// render::RenderOptions directly.
+#include "render/Renderer.h"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+
+namespace penumbra::app {
+
+struct RenderCli {
+    bool technique = true;     // --technique NAME
+    bool overlay = true;       // --overlay
+    bool transparency = true;  // --transparency MODE, --peel-layers N
+};
+
+// Registers --technique, --shadow-res, --param (repeatable; name=value, a choice by its label,
+// a flag by true/false), --overlay, --transparency and --peel-layers, as `which` asks.
+void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderCli which = {});
+// The positional scene and --size WxH.
+void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize);
+// --egl-platform auto | surfaceless | device.
+void addEglPlatform(CLI::App& command, std::string& platform);
+
+}  // namespace penumbra::app
