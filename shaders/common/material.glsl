@@ -6,7 +6,7 @@ uniform int uHasTexture;
 uniform vec3 uDiffuse;
 uniform vec3 uSpecular;
 uniform float uShininess;
-uniform float uAlpha;          // coverage (SPEC §4)
+uniform float uAlpha;          // coverage (McGuire & Enderton 2011)
 uniform vec3 uTransmission;    // t_rgb
 uniform float uAlphaCutoff;    // > 0: alpha test
 

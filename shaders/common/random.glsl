@@ -1,4 +1,4 @@
-// Per-fragment random numbers for stochastic shadow maps (seed 000 §5.1: speed and artifacts
+// Per-fragment random numbers for stochastic shadow maps (Mátl 2013 §5.1: speed and artifacts
 // depend on the generator). Seeded by the fragment's light-space position *and depth*, so that
 // stacked layers decorrelate and the result does not depend on draw order, plus a per-frame value.
 //   kRandomPcg: PCG-style integer hash (Jarzynski & Olano 2020's recommendation for GPU hashing)

@@ -1,5 +1,5 @@
 #version 450 core
-// Forward Blinn-Phong in linear space (SPEC §2, issue 2):
+// Forward Blinn-Phong in linear space (Blinn 1977; Mátl 2013 §5.2):
 //   ambient*diffuse + sum_lights (diffuse*max(N.L,0) + specular) * colour*intensity * visibility
 // where visibility (rgb, coloured) comes from the active shadow technique's lookup.
 #include "../common/material.glsl"
@@ -20,7 +20,7 @@ uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world
                                // 4 unshadowed light from uDebugLight, 5 ambient term
 uniform int uDebugLight;
 
-// Translucent output, chosen by the renderer's transparency mode (SPEC §4 end):
+// Translucent output, chosen by the renderer's transparency mode (Mátl 2013 ch. 3):
 //   default: dual-source blending dst * transmit + src (painter's order)
 //   TRANSLUCENT_WEIGHTED: weighted blended OIT (McGuire & Bavoil 2013), two targets
 //   TRANSLUCENT_PEEL: depth peeling (Everitt 2001), one layer per pass, two targets
@@ -61,7 +61,7 @@ vec3 projectorTexel(int slot, vec2 uv) {
 }
 
 // Light arriving at P from light i before shadowing: radiance shaped by spot cone or projector
-// picture (seed 001 "Projekce": the picture rides on the light, the shadow map cuts it).
+// picture (Nápravník 2020, "Projekce": the picture rides on the light, the shadow map cuts it).
 vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
     LightData light = uLights[i];
     int type = lightType(i);

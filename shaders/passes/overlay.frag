@@ -1,6 +1,6 @@
 #version 450 core
-// Debug overlay: a light's depth map (grey, contrast-stretched) or colour map (seed 001's
-// third phase, seed 000 fig. 5.2).
+// Debug overlay: a light's depth map (grey, contrast-stretched) or colour map (Nápravník 2020's
+// third phase, Mátl 2013 fig. 5.2).
 #include "../common/color.glsl"
 in vec2 vUv;
 layout(binding = 0) uniform sampler2D uImage;

@@ -1,5 +1,5 @@
 #version 450 core
-// End of frame: distance fog towards the background before the far plane (seed 001 "Mlha"),
+// End of frame: distance fog towards the background before the far plane (Nápravník 2020, "Mlha"),
 // clamp (no tone mapping) and sRGB encoding.
 #include "../common/color.glsl"
 in vec2 vUv;

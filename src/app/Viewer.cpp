@@ -24,7 +24,7 @@ namespace penumbra::app {
 
 namespace {
 
-constexpr int kResolutionKeys[] = {256, 512, 1024, 2048, 4096};  // keys 1-5 (seed 002 §3.4)
+constexpr int kResolutionKeys[] = {256, 512, 1024, 2048, 4096};  // keys 1-5 (Plachý 2012 §3.4)
 
 struct ViewerState {
     bool animate = true;

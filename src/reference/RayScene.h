@@ -1,7 +1,7 @@
 #pragma once
 // The scene at one instant, in an Embree 3 BVH, answering "how much of a light's colour gets
 // from A to B": the product over every surface crossed of (1 - rho_rgb), rho = (1 - t) * alpha
-// (SPEC §4), with alpha textures and alpha-test cut-outs honoured. Knows nothing of GL.
+// (McGuire & Enderton 2011), with alpha textures and alpha-test cut-outs honoured. Knows nothing of GL.
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>

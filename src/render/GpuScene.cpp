@@ -44,7 +44,7 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             const bool textureAlpha = mat.diffuseTexture >= 0 && mat.alphaCutoff <= 0 &&
                                       scene_.images[static_cast<std::size_t>(mat.diffuseTexture)].hasTranslucentAlpha();
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
-            // Painter's order by the object's centre (as seed 000 did); per-triangle order is issue 5.
+            // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             out.push_back(d);
         }

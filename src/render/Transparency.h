@@ -1,7 +1,7 @@
 #pragma once
-// Translucent surfaces as the camera sees them (SPEC §4 end, seed 000 ch. 3). Every mode blends
+// Translucent surfaces as the camera sees them (Mátl 2013 ch. 3). Every mode blends
 // over the opaque frame with dst * transmittance + colour, transmittance (1 - ρ) per channel:
-//   sorted-objects    painter's algorithm by object centre (what seed 000 did)
+//   sorted-objects    painter's algorithm by object centre (what Mátl 2013 did)
 //   sorted-triangles  painter's algorithm by triangle centre within each object
 //   depth-peeling     Everitt 2001: N exact layers front to back, composited in one pass
 //   dual-depth-peeling  Bavoil & Myers 2008: the nearest and farthest layer per pass (N/2 passes)

@@ -1,5 +1,5 @@
 #pragma once
-// The three camera manipulators of OSG that seed 002 §3.3-3.4 used: first-person fly,
+// The three camera manipulators of OSG that Plachý 2012 §3.3-3.4 used: first-person fly,
 // trackball and orbit. Pure math on scene::Camera; the window front-end feeds them input.
 #include "scene/Camera.h"
 

@@ -6,7 +6,7 @@
 namespace penumbra::scene {
 
 // Surface description shared by shading and (later) coloured shadows. The coverage/transmission
-// pair follows McGuire & Enderton 2011 (SPEC §4): a photon hitting the surface is intercepted
+// pair follows McGuire & Enderton 2011: a photon hitting the surface is intercepted
 // with probability `alpha`; an intercepted photon passes through with probability
 // `transmission` per channel. The fraction stopped is rho = (1 - t) * alpha.
 struct Material {

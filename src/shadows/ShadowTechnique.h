@@ -27,7 +27,7 @@
 namespace penumbra::shadows {
 
 // Which casters a pass wants. Opaque casters block; translucent ones (coverage < 1 or
-// transmission > 0) tint (SPEC §4).
+// transmission > 0) tint (McGuire & Enderton 2011).
 enum class Casters { Opaque, Translucent };
 
 // What the renderer gives a technique for one frame.

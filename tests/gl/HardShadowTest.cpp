@@ -150,7 +150,7 @@ TEST(ShadowBias, LargeBiasDetachesTheShadow) {
 }
 
 // Light straight down through translucent panes (single surfaces) onto a white plane: the received light under
-// the panes is the product of (1 - rho) over the layers, rho = (1 - t) * alpha (SPEC §4).
+// the panes is the product of (1 - rho) over the layers, rho = (1 - t) * alpha (McGuire & Enderton 2011).
 glm::vec3 lightUnderPanes(const std::vector<std::string>& materials) {
     std::string objects = R"({ "shape": "plane", "size": [20, 20] })";
     float y = 2.0f;

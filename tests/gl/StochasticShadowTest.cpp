@@ -1,4 +1,4 @@
-// Coloured stochastic shadow maps (SPEC §4): the received light under translucent panes matches
+// Coloured stochastic shadow maps (McGuire & Enderton 2011): the received light under translucent panes matches
 // ρ = (1 - t) α per layer within the noise its sample count allows; noise falls with taps; the
 // white-clear fix; order independence.
 #include "GlTestSupport.h"

@@ -1,6 +1,6 @@
 // The ray-traced reference checked against closed forms: a quad's hard shadow, the penumbra of
 // a disk light behind a straight edge (similar triangles and the disk-segment area), and
-// transmittance through translucent layers (SPEC §4).
+// transmittance through translucent layers (McGuire & Enderton 2011).
 #include "reference/Metrics.h"
 #include "reference/RayScene.h"
 #include "reference/Visibility.h"

@@ -1,5 +1,5 @@
 #version 450 core
-// Casters into a coloured stochastic shadow map (McGuire & Enderton 2011; seed 000 ch. 4-5).
+// Casters into a coloured stochastic shadow map (McGuire & Enderton 2011; Mátl 2013 ch. 4-5).
 // A fragment stops light of channel λ with probability ρ_λ = (1 - t_λ) α: it writes its depth
 // to that channel when ξ < ρ_λ, and 1 (no occlusion) otherwise; MIN blending keeps the nearest
 // occluder per channel. (The thesis's pseudocode prints the comparison reversed; its text and

@@ -1,5 +1,5 @@
 #version 450 core
-// CSSM2 step 2 (seed 000 §5.4.2): copy the opaque casters' depth into every colour channel.
+// CSSM2 step 2 (Mátl 2013 §5.4.2): copy the opaque casters' depth into every colour channel.
 // Depth is stored linear in [0, 1] (half floats would waste their precision on perspective
 // depth); texels with no opaque caster get 1, i.e. white, so translucent surfaces with nothing
 // opaque behind them do not shadow wrongly (the thesis's white-clear fix).

@@ -5,7 +5,7 @@
 namespace penumbra::shadows {
 
 // Williams 1978: one depth comparison per pixel against the nearest opaque caster, nearest
-// texel (so aliasing stays visible), plus seed 001's coloured tint from translucent casters.
+// texel (so aliasing stays visible), plus the coloured tint of Nápravník 2020 from translucent casters.
 class HardShadowMap final : public ShadowTechnique {
 public:
     std::string name() const override { return "hard"; }

@@ -1,4 +1,4 @@
-// Hard shadow-map lookup (Williams 1978) with the translucent tint of seed 001.
+// Hard shadow-map lookup (Williams 1978) with the translucent tint of Nápravník 2020.
 #include "src/shadows/common/glsl/shadow_coord.glsl"
 #include "src/shadows/common/glsl/shadow_samplers.glsl"
 

@@ -11,7 +11,7 @@ namespace penumbra::shadows {
 // light's screen mask. The stencil marks the receiver's pixels (so nothing spills off it) and
 // counts each pixel once (so overlapping casters do not darken twice). Both tricks, and the
 // clipping of casters that are not between the plane and the light, can be switched off to show
-// the seed's failure modes (002 §2.3). Nothing but the receiver is shadowed.
+// the failure modes of Plachý 2012 §2.3. Nothing but the receiver is shadowed.
 class PlanarProjectedShadows final : public ShadowTechnique {
 public:
     PlanarProjectedShadows();

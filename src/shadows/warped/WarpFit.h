@@ -49,7 +49,7 @@ std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, 
                                           const scene::Bounds& box);
 
 // Projection of tile (col, row) of a cols x rows grid over the camera's image (row 0 at the
-// bottom), the sub-frustum the seed's slave cameras used (002 §3.5).
+// bottom), the sub-frustum Plachý 2012's slave cameras used (§3.5).
 glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, int rows, int col, int row, float far);
 
 struct LispsmOptions {

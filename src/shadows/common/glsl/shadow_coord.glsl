@@ -1,5 +1,5 @@
 // Where a surface point lands in its light's shadow map, with the bias knobs applied
-// (SPEC §3 "Shadow maps": constant, slope-scaled and normal-offset bias). All three are in
+// (constant, slope-scaled and normal-offset bias). All three are in
 // units of the world size of one shadow texel at the receiver, so their defaults hold at any
 // scene scale and map resolution.
 #include "shaders/common/lights.glsl"

@@ -84,7 +84,7 @@ float rawDepthAt(ShadowSite s, vec2 texels) {
     return shadowRawLod2D(s.slot, s.coord.xy + texels / s.resolution).r;
 }
 
-// The translucent tint behind the nearest translucent layer (seed 001's colour map).
+// The translucent tint behind the nearest translucent layer (the colour map of Nápravník 2020).
 vec3 tintAt(ShadowSite s) {
     vec4 t = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
     return s.depth > t.a ? t.rgb : vec3(1.0);

@@ -1,5 +1,5 @@
 #version 450 core
-// Translucent casters as seen from the light (seed 001's per-light colour buffer):
+// Translucent casters as seen from the light (the per-light colour buffer of Nápravník 2020):
 // rgb = fraction of light passing, multiplied over every layer by blending (dst * src);
 // a = depth of the nearest translucent layer (MIN blending), so receivers in front of it
 // stay untinted.
