@@ -1,7 +1,6 @@
 #pragma once
 #include "gl/Texture.h"
-#include "shadows/ShadowTechnique.h"
-#include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/SharedMapTechnique.h"
 #include "shadows/common/PoissonDisk.h"
 #include "shadows/pcf/PcfKernel.h"
 
@@ -9,7 +8,7 @@ namespace penumbra::shadows {
 
 // Fixed-size penumbra: PCF over one of the kernels of pcf/lookup.glsl. The jitter texture is
 // built once.
-class PercentageCloserFilter final : public ShadowTechnique {
+class PercentageCloserFilter final : public SharedMapTechnique {
 public:
     enum class Kernel {
         Grid = gpu::kPcfGrid, Bilinear = gpu::kPcfBilinear, Gaussian = gpu::kPcfGaussian, Poisson = gpu::kPcfPoisson,
@@ -20,10 +19,8 @@ public:
 
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/pcf/lookup.glsl"; }
-    void renderMaps(const ShadowFrame& frame) override { maps_.render(frame); }
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes(); }
-    std::vector<DebugView> debugViews() const override { return maps_.debugViews(); }
 
 protected:
     std::vector<Parameter> declareParameters() override;
@@ -38,7 +35,6 @@ private:
     bool receiverPlane_ = true;
     PoissonDisk poisson_;
     gl::Texture jitter_;
-    DepthAndTintMaps maps_;
 };
 
 }  // namespace penumbra::shadows
