@@ -17,8 +17,14 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
 
 std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
     // Labels in the order of CssmFilter.h and of the kRandom* codes.
-    return {Parameter::choice("filter", filter_, {"pcf9", "poisson16", "poisson20", "random30", "cross13"},
-                              "reconstruction filter of the lookup (Mátl 2013 §5.3)"),
+    return {Parameter::choice("filter", filter_, {"pcf9", "poisson16", "poisson20", "random30", "cross13", "box16", "box64"},
+                              "reconstruction filter of the lookup: the thesis's (Mátl 2013 §5.3), or a 4x4 / 8x8 texel box "
+                              "matched to the stratified xi"),
+            Parameter::choice("xi", xi_, {"white", "stratified"},
+                              "how casters draw xi: independent per fragment, or stratified: every threshold stratum once per 4x4 (8x8) tile"),
+            Parameter::flag("separate_opaque", separateOpaque_,
+                            "opaque occlusion from the depth map (a hard test), the coloured map for translucent layers "
+                            "only; off: the thesis's combined map"),
             Parameter::real("radius_texels", radiusTexels_, 0.0f, 8.0f,
                             "Poisson / random filter radius; 0: automatic, so that taps land on distinct texels"),
             Parameter::choice("rng", generator_, {"pcg", "sin-fract"}, "per-fragment random number generator"),
@@ -57,6 +63,8 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     depth_.render(frame);  // 1. opaque casters' depth
     gl::DebugGroup group(name().c_str());
     casters_.set("uRandomGenerator", generator_);
+    casters_.set("uXi", xi_);
+    casters_.set("uDitherBits", filter_ == gpu::kCssmBox64 ? 3 : 2);  // the dither period matches the box
     casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
     // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
     // depth (tested, not written), MIN-blended per channel.
@@ -76,7 +84,10 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
         glViewport(0, 0, m.resolution, m.resolution);
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
             m.targets[f].bind();
-            {  // 1 (white) where nothing opaque is
+            if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
+                const float white[4] = {1, 1, 1, 1};
+                glClearNamedFramebufferfv(m.targets[f].id(), GL_COLOR, 0, white);
+            } else {  // 1 (white) where nothing opaque is
                 const gl::ScopedPassState state(copyPass);
                 copy_.use();
                 depthSampler_.bind(0);
@@ -94,7 +105,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             }
             for (int c = 0; c < 3; ++c) {  // one map per wavelength
                 gl::PassState channelPass = casterPass;
-                channelPass.colorWrite = glm::bvec4(c == 0, c == 1, c == 2, false);
+                channelPass.colorWrite = glm::bvec4(c == 0, c == 1, c == 2, c == 0);
                 const gl::ScopedPassState state(channelPass);
                 casters_.set("uChannel", c);
                 frame.drawCasters(casters_, Casters::Translucent);
@@ -110,6 +121,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
         maps_[i].colour.bind(static_cast<GLuint>(depth_.slots().rawUnit(i)));
     }
     lighting.set("uFilter", filter_);
+    lighting.set("uSeparateOpaque", separateOpaque_ ? 1 : 0);
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
     poisson_.upload(lighting);

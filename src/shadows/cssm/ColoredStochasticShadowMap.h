@@ -47,9 +47,9 @@ private:
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
 
     Variant variant_;
-    int filter_ = gpu::kCssmCross13, generator_ = gpu::kRandomPcg;
+    int filter_ = gpu::kCssmBox16, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
     float radiusTexels_ = 0.0f;
-    bool fp16_;
+    bool fp16_, separateOpaque_ = true;
     PoissonDisk poisson_;
     DepthAndTintMaps depth_{/*withTint=*/false};
     std::vector<LightMap> maps_;

@@ -9,22 +9,54 @@
 #include "shaders/common/material.glsl"
 #include "shaders/common/random.glsl"
 #include "shaders/common/depth.glsl"
+#include "src/shadows/cssm/CssmFilter.h"
 in vec2 vUv;
 uniform int uPerspective;
 uniform float uNear, uFar;
 uniform int uChannel;  // -1: all channels (CSSM2), else 0..2 (CSSM1)
+uniform int uXi;       // kXi*
+uniform mat4 uModel;   // the caster's placement (caster.vert): tells objects apart, in any draw order
 layout(location = 0) out vec4 outDepth;
 
 float linearDepth(float z) { return uPerspective == 0 ? z : perspectiveLinearDepth(z, uNear, uFar); }
+
+// Stratified ξ: within every n x n texel tile each of the n² strata [k, k + 1) / n² holds
+// exactly one texel's threshold, so the share of texels a layer writes in a whole tile is ρ to
+// within 1/n² instead of a binomial draw (sd sqrt(ρ(1 - ρ)/n²)). Which texel gets which stratum
+// is a uniformly random permutation per tile and per layer - the rank of the texel's hash among
+// the tile's n² hashes - and the thresholds are shifted together inside their strata, so that the
+// mean is exact. Independent permutations per layer (object placement, triangle, side) keep
+// stacked layers independent, so their transmittances multiply, with the overlap of two layers
+// hypergeometric rather than binomial. Nothing depends on the frame: a static view does not flicker.
+uniform int uDitherBits;  // n = 2^bits: 2 (4 x 4 tiles) or 3 (8 x 8)
+
+float stratifiedXi(uint stream) {
+    uvec2 p = uvec2(gl_FragCoord.xy);
+    uint side = 1u << uint(uDitherBits), count = side * side;
+    uvec4 placement = floatBitsToUint(uModel[3]) ^ floatBitsToUint(uModel[0]) ^ floatBitsToUint(uModel[1]);
+    uint object = pcgHash(placement.x ^ pcgHash(placement.y ^ pcgHash(placement.z ^ pcgHash(floatBitsToUint(uModel[2].x)))));
+    uint layer = object ^ pcgHash(uint(gl_PrimitiveID) * 2u + (gl_FrontFacing ? 1u : 0u));
+    uvec2 tile = p >> uint(uDitherBits), inTile = p & (side - 1u);
+    uint seed = pcgHash(tile.x ^ pcgHash(tile.y ^ pcgHash(layer ^ pcgHash(stream))));
+    uint mine = pcgHash(seed + inTile.y * side + inTile.x);
+    uint rank = 0u;
+    for (uint k = 0u; k < count; ++k) rank += pcgHash(seed + k) < mine ? 1u : 0u;
+    float shift = float(pcgHash(seed ^ 0x9e3779b9u) >> 8) * (1.0 / 16777216.0);
+    return (float(rank) + shift) / float(count);
+}
+
+float drawXi(uint stream) { return uXi == kXiStratified ? stratifiedXi(stream) : fragmentRandom(stream); }
 
 void main() {
     vec3 rho = materialStopped(materialCoverage(materialTexel(vUv)));
     float z = linearDepth(gl_FragCoord.z);
     if (uChannel < 0) {
-        float xi = fragmentRandom(0u);
-        outDepth = vec4(mix(vec3(1.0), vec3(z), lessThan(vec3(xi), rho)), 1.0);
+        float xi = drawXi(0u);
+        // Alpha: the nearest translucent layer of any channel (MIN-blended), whatever ξ drew,
+        // so that lookups can tell cheaply where no coloured shadow can be.
+        outDepth = vec4(mix(vec3(1.0), vec3(z), lessThan(vec3(xi), rho)), z);
         return;
     }
-    float xi = fragmentRandom(uint(uChannel) + 1u);
-    outDepth = vec4(xi < rho[uChannel] ? z : 1.0);
+    float xi = drawXi(uint(uChannel) + 1u);
+    outDepth = vec4(vec3(xi < rho[uChannel] ? z : 1.0), z);  // alpha: as above (written in the red pass)
 }

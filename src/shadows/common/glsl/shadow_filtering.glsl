@@ -61,15 +61,40 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
 // The receiver's own depth at a tap `texels` away, extrapolated along its plane (receiver-plane
 // depth bias; Isidoro 2006 for 2D maps, an exact ray-plane intersection for cube faces), so wide
 // kernels do not shadow sloped receivers with themselves. Clamped against grazing planes.
+float cubeReceiverDepth(ShadowSite s, vec3 d);
+
 float tapReceiverDepth(ShadowSite s, vec2 texels) {
     if (!s.cube) return s.depth + clamp(dot(s.depthSlope, texels), -0.01, 0.01);
-    vec3 d = s.coord + s.tangent * texels.x + s.bitangent * texels.y;
+    return cubeReceiverDepth(s, s.coord + s.tangent * texels.x + s.bitangent * texels.y);
+}
+
+// The receiver's depth where its plane meets the light's ray along direction `d` (cube maps).
+float cubeReceiverDepth(ShadowSite s, vec3 d) {
     float denom = dot(d, s.planeNormal);
     float k = abs(denom) > 1e-8 ? dot(s.planePoint, s.planeNormal) / denom : 1.0;
     if (k <= 0.0) return s.depth;
     vec3 q = abs(d * k);
     float depth = perspectiveWindowDepth(max(q.x, max(q.y, q.z)), s.near, s.far) - s.depthBias;
     return clamp(depth, s.depth - 0.01, s.depth + 0.01);
+}
+
+// Cube-map texel addressing (OpenGL 4.5 table 8.19): the face a direction selects, and its
+// (s, t) in [0, 1]; cubeFaceDirection inverts it for a face and (s, t).
+vec3 cubeFaceCoord(vec3 d, out int face) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) { face = d.x > 0.0 ? 0 : 1; return vec3((vec2(d.x > 0.0 ? -d.z : d.z, -d.y) / a.x + 1.0) * 0.5, a.x); }
+    if (a.y >= a.z) { face = d.y > 0.0 ? 2 : 3; return vec3((vec2(d.x, d.y > 0.0 ? d.z : -d.z) / a.y + 1.0) * 0.5, a.y); }
+    face = d.z > 0.0 ? 4 : 5;
+    return vec3((vec2(d.z > 0.0 ? d.x : -d.x, -d.y) / a.z + 1.0) * 0.5, a.z);
+}
+vec3 cubeFaceDirection(int face, vec2 st) {
+    vec2 c = st * 2.0 - 1.0;  // (sc, tc) with |ma| = 1
+    if (face == 0) return vec3(1.0, -c.y, -c.x);
+    if (face == 1) return vec3(-1.0, -c.y, c.x);
+    if (face == 2) return vec3(c.x, 1.0, c.y);
+    if (face == 3) return vec3(c.x, -1.0, -c.y);
+    if (face == 4) return vec3(c.x, -c.y, 1.0);
+    return vec3(-c.x, -c.y, -1.0);
 }
 
 // Hardware comparison at an offset of `texels` (plus a depth offset, e.g. receiver-plane).

@@ -49,3 +49,14 @@ vec4 shadowRawCube(int slot, vec3 dir, vec3 dx, vec3 dy) {
 }
 vec4 shadowRawLod2D(int slot, vec2 uv) { return shadowRaw2D(slot, uv, vec2(0.0), vec2(0.0)); }
 vec4 shadowRawLodCube(int slot, vec3 dir) { return shadowRawCube(slot, dir, vec3(0.0), vec3(0.0)); }
+// Alpha of the 2 x 2 raw texels around uv (2D) or dir (cube), without filtering.
+vec4 shadowRawGatherAlpha2D(int slot, vec2 uv) {
+#define S(i) textureGather(uShadowRaw[i], uv, 3)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowRawGatherAlphaCube(int slot, vec3 dir) {
+#define S(i) textureGather(uShadowRawCube[i], dir, 3)
+    SLOT_SWITCH_2(S)
+#undef S
+}
