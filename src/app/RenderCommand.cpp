@@ -79,6 +79,7 @@ BatchResult renderBatch(const BatchJob& job) {
         {"lights", lights},
         {"shadow_memory_bytes", result.shadowMemoryBytes},
         {"gl_errors", gl::debugErrorCount()},
+        {"gl_warnings", gl::debugWarningCount()},
         {"warmup_frames", 1},
         {"mean_ms", {{"shadow", result.mean.shadowMs}, {"opaque", result.mean.opaqueMs},
                      {"translucent", result.mean.translucentMs}, {"post", result.mean.postMs},

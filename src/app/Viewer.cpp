@@ -16,6 +16,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <glm/gtx/rotate_vector.hpp>
@@ -73,46 +74,54 @@ void parameterWidget(const shadows::Parameter& p) {
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s (default %s)", p.help.c_str(), p.defaultText.c_str());
 }
 
+// The panel: docked on the left, at most a third of the window wide, its sections collapsed
+// except the technique's, so the scene stays visible (h hides it).
 void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraController& controller) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("penumbra", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = std::min(display.x / 3.0f, 340.0f * ImGui::GetIO().FontGlobalScale);
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, display.y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("penumbra", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.0f);  // labels keep 7 em on the right
     const render::PassTimes& t = renderer.lastTimes();
-    ImGui::Text("%.1f FPS | GPU ms: shadow %.2f, opaque %.2f, translucent %.2f, post %.2f", state.fps(), t.shadowMs,
-                t.opaqueMs, t.translucentMs, t.postMs);
-    ImGui::Text("shadow memory %.2f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
+    ImGui::Text("%.1f FPS, GPU %.1f ms", state.fps(), t.totalMs());
+    ImGui::Text("shadow %.1f | opaque %.1f ms", t.shadowMs, t.opaqueMs);
+    ImGui::Text("shadow memory %.1f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
 
-    const std::string current = renderer.technique().name();
-    if (ImGui::BeginCombo("technique", current.c_str())) {
-        for (const auto& info : shadows::techniqueRegistry())
-            if (ImGui::Selectable(info.name.c_str(), info.name == current)) {
-                try {
-                    renderer.setTechnique(info.name);
-                } catch (const std::exception& e) {
-                    log::error("{}", e.what());
+    if (ImGui::CollapsingHeader("technique", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const std::string current = renderer.technique().name();
+        if (ImGui::BeginCombo("technique", current.c_str())) {
+            for (const auto& info : shadows::techniqueRegistry())
+                if (ImGui::Selectable(info.name.c_str(), info.name == current)) {
+                    try {
+                        renderer.setTechnique(info.name);
+                    } catch (const std::exception& e) {
+                        log::error("{}", e.what());
+                    }
                 }
-            }
-        ImGui::EndCombo();
+            ImGui::EndCombo();
+        }
+        int& res = renderer.options().shadowResolution;
+        ImGui::InputInt("map res (0: light's)", &res, 256, 1024);
+        res = std::clamp(res, 0, 8192);
+        for (const auto& p : renderer.technique().parameters()) parameterWidget(p);
+        ImGui::Checkbox("debug maps (o)", &renderer.options().debugOverlay);
     }
-    int& res = renderer.options().shadowResolution;
-    ImGui::InputInt("shadow res (0: per light)", &res, 256, 1024);
-    res = std::clamp(res, 0, 8192);
-    for (const auto& p : renderer.technique().parameters()) parameterWidget(p);
-
-    int transparency = static_cast<int>(renderer.options().transparency);
-    if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0dual-depth-peeling\0weighted\0stochastic\0"))
-        renderer.options().transparency = static_cast<render::TransparencyMode>(transparency);
-    if (renderer.options().transparency == render::TransparencyMode::DepthPeeling ||
-        renderer.options().transparency == render::TransparencyMode::DualDepthPeeling)
-        ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
-    ImGui::Checkbox("animate (space)", &state.animate);
-    ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
-    ImGui::Checkbox("debug maps overlay (o)", &renderer.options().debugOverlay);
-    int mode = static_cast<int>(controller.mode());
-    if (ImGui::Combo("camera (c)", &mode, "fly\0trackball\0orbit\0")) controller.setMode(static_cast<scene::Camera::Controller>(mode));
-
+    if (ImGui::CollapsingHeader("view and animation")) {
+        int transparency = static_cast<int>(renderer.options().transparency);
+        if (ImGui::Combo("transparency", &transparency, "sorted-objects\0sorted-triangles\0depth-peeling\0dual-depth-peeling\0weighted\0stochastic\0"))
+            renderer.options().transparency = static_cast<render::TransparencyMode>(transparency);
+        if (renderer.options().transparency == render::TransparencyMode::DepthPeeling ||
+            renderer.options().transparency == render::TransparencyMode::DualDepthPeeling)
+            ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
+        ImGui::Checkbox("animate (space)", &state.animate);
+        ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
+        int mode = static_cast<int>(controller.mode());
+        if (ImGui::Combo("camera (c)", &mode, "fly\0trackball\0orbit\0")) controller.setMode(static_cast<scene::Camera::Controller>(mode));
+    }
     auto& lights = renderer.scene().lights;
-    if (!lights.empty()) {
+    if (!lights.empty() && ImGui::CollapsingHeader("lights")) {
         state.selectedLight = std::clamp(state.selectedLight, 0, static_cast<int>(lights.size()) - 1);
         if (ImGui::BeginCombo("light", lights[static_cast<std::size_t>(state.selectedLight)].name.c_str())) {
             for (std::size_t i = 0; i < lights.size(); ++i)
@@ -131,11 +140,14 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
         }
         ImGui::Checkbox("casts shadows", &l.shadow.enabled);
         ImGui::SliderFloat("bias (texels)", &l.shadow.bias, 0.0f, 20.0f);
-        ImGui::SliderFloat("slope bias (texels)", &l.shadow.slopeBias, 0.0f, 10.0f);
-        ImGui::SliderFloat("normal offset (texels)", &l.shadow.normalOffset, 0.0f, 10.0f);
+        ImGui::SliderFloat("slope bias", &l.shadow.slopeBias, 0.0f, 10.0f);
+        ImGui::SliderFloat("normal offset", &l.shadow.normalOffset, 0.0f, 10.0f);
         ImGui::SliderFloat2("polygon offset", &l.shadow.polygonOffset.x, 0.0f, 10.0f);
     }
-    ImGui::TextUnformatted("WASD/QE move, right-drag look, arrows move light, 1-5 res, m fullscreen, n FPS, p screenshot");
+    if (ImGui::CollapsingHeader("keys"))
+        ImGui::TextWrapped("WASD/QE move, right-drag look, arrows move the light, 1-5 map resolution, space animation, "
+                           "o debug maps, c camera, m full screen, n FPS, h hide panel, p screenshot, Esc quit");
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 
@@ -164,6 +176,11 @@ int runViewer(const ViewerOptions& opts) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
+    // Scale fonts and widgets with the display's content scale (HiDPI).
+    float scaleX = 1.0f, scaleY = 1.0f;
+    glfwGetWindowContentScale(window.handle(), &scaleX, &scaleY);
+    ImGui::GetIO().FontGlobalScale = std::max(1.0f, scaleY);
+    ImGui::GetStyle().ScaleAllSizes(std::max(1.0f, scaleY));
     ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
     ImGui_ImplOpenGL3_Init("#version 450 core");
 

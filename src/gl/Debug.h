@@ -9,6 +9,11 @@ namespace penumbra::gl {
 void enableDebugOutput();
 int debugErrorCount();
 void resetDebugErrorCount();
+// Driver messages of medium or high severity that are not errors (undefined behaviour,
+// deprecated or non-portable use, ...); performance hints are not counted.
+int debugWarningCount();
+// Called for each counted error or warning (tests turn them into failures).
+void setDebugMessageHook(void (*hook)(const char* message));
 // Checks glGetError and throws std::runtime_error naming `where` if one is pending.
 void checkError(const char* where);
 

@@ -206,6 +206,7 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     program.set("uTranslucentPass", translucent ? 1 : 0);
     program.set("uOutputMode", static_cast<int>(options_.output));
     program.set("uDebugLight", options_.debugLight);
+    placeholders_.bindAll();
     technique_->bindLookup(program);
     int projector = 0;
     for (const auto& light : scene_.lights)

@@ -10,6 +10,7 @@
 #include "gl/TimerQuery.h"
 #include "gl/VertexArray.h"
 #include "render/GpuScene.h"
+#include "render/PlaceholderTextures.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
 #include "shadows/ShadowTechnique.h"
@@ -90,6 +91,7 @@ private:
     gl::Buffer lineVertices_;
     gl::VertexArray lineVao_;
     std::unique_ptr<OrderIndependentTransparency> oit_;  // built on first use, per technique
+    PlaceholderTextures placeholders_;  // on every lighting unit the technique leaves empty
     gl::Buffer lightBlock_;
     gl::VertexArray emptyVao_;
     gl::Sampler overlaySampler_{GL_LINEAR, GL_LINEAR};  // reads depth maps without comparison

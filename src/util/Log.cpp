@@ -23,6 +23,9 @@ void write(Level level, const std::string& message) {
         case Level::Error:
             std::cerr << "penumbra: error: " << message << "\n";
             break;
+        case Level::Driver:
+            std::cerr << "penumbra: warning: GL: " << message << "\n";
+            break;
     }
 }
 

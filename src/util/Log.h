@@ -9,7 +9,9 @@
 
 namespace penumbra::log {
 
-enum class Level { Info, Warn, Error };
+// Driver: a message from the GL driver (KHR_debug), printed like a warning but not recorded
+// with the project's own warnings.
+enum class Level { Info, Warn, Error, Driver };
 
 void write(Level level, const std::string& message);
 // Warnings recorded since the last call (and clears them).

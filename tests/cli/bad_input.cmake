@@ -22,7 +22,7 @@ expect_failure("known: hard" "${PENUMBRA}" compare --techniques hard,wobbly --ou
 expect_failure("no lights" "${PENUMBRA}" compare "${DATA}/missing_texture.json" --out "${tmp}")
 expect_failure("no lights" "${PENUMBRA}" reference "${DATA}/missing_texture.json" --out "${tmp}")
 # Typed parameters: a choice names its labels, a flag its values, an unknown name the known ones.
-expect_failure("pcf9 | poisson16 | poisson20 | random30 | cross13" "${PENUMBRA}" render --technique cssm2 --param filter=gaussian --out "${tmp}")
+expect_failure("pcf9 | poisson16 | poisson20 | random30 | cross13 | box16 | box64" "${PENUMBRA}" render --technique cssm2 --param filter=gaussian --out "${tmp}")
 expect_failure("true | false" "${PENUMBRA}" render --technique cascaded --param stabilize=maybe --out "${tmp}")
 expect_failure("its parameters: radius_texels" "${PENUMBRA}" render --technique pcf-grid --param radius=3 --out "${tmp}")
 expect_failure("expects name=value" "${PENUMBRA}" render --param radius --out "${tmp}")

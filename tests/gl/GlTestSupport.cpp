@@ -16,6 +16,10 @@ public:
     void SetUp() override {
         context_ = platform::EglContext::create("auto", /*debug=*/true);
         gl::enableDebugOutput();
+        // Every GL error and every driver warning of medium or high severity (undefined
+        // behaviour, ...) fails the test that caused it; the project's own warnings are separate
+        // (log::takeWarnings).
+        gl::setDebugMessageHook([](const char* message) { ADD_FAILURE() << "GL debug message: " << message; });
     }
     void TearDown() override { context_.reset(); }
 

@@ -1,0 +1,24 @@
+#pragma once
+// A 1x1 texture of the right kind on every texture unit the lighting shader declares, bound
+// before the technique binds its own maps. Units of empty slots (a light without shadow, a
+// technique without a layered map) then hold a texture their sampler type accepts - a depth
+// texture with comparison for shadow samplers - instead of texture 0, which drivers report as
+// undefined behaviour (NVIDIA does, every frame). The unit -> sampler type table is the
+// lighting shader's declarations of gpu/ShaderContract.h's units.
+#include "gl/Texture.h"
+
+namespace penumbra::render {
+
+class PlaceholderTextures {
+public:
+    PlaceholderTextures();
+    // Binds a placeholder to every unit below gpu::kUnitDualDepth (the units above belong to the
+    // camera-transparency passes, which bind their own).
+    void bindAll() const;
+
+private:
+    gl::Texture depth2D_, depthCube_, depthArray_;  // depth, comparison on: sampler*Shadow
+    gl::Texture white2D_, whiteCube_, whiteArray_, white3D_;
+};
+
+}  // namespace penumbra::render
