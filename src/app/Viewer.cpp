@@ -103,7 +103,7 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
             ImGui::EndCombo();
         }
         int& res = renderer.options().shadowResolution;
-        ImGui::InputInt("map res (0: light's)", &res, 256, 1024);
+        ImGui::InputInt("map res (0: own)", &res, 256, 1024);
         res = std::clamp(res, 0, 8192);
         for (const auto& p : renderer.technique().parameters()) parameterWidget(p);
         ImGui::Checkbox("debug maps (o)", &renderer.options().debugOverlay);
