@@ -47,6 +47,10 @@ BatchResult renderBatch(const BatchJob& job) {
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
         writePng(job.outDir / name, job.width, job.height, pixels);
         const PassTimes& p = renderer.lastTimes();
+        const auto& triangles = renderer.shadowTriangles();
+        if (result.shadowTriangles.size() < triangles.size()) result.shadowTriangles.resize(triangles.size());
+        for (std::size_t l = 0; l < triangles.size(); ++l)
+            result.shadowTriangles[l] += static_cast<double>(triangles[l]) / job.frames;
         frames.push_back({{"index", i}, {"time", t}, {"shadow_ms", p.shadowMs}, {"opaque_ms", p.opaqueMs},
                           {"translucent_ms", p.translucentMs}, {"post_ms", p.postMs}, {"total_ms", p.totalMs()},
                           {"cpu_ms_with_readback", cpuMs}});
@@ -59,9 +63,12 @@ BatchResult renderBatch(const BatchJob& job) {
     result.shadowMemoryBytes = renderer.shadowMemoryBytes();
 
     nlohmann::json lights = nlohmann::json::array();
-    for (const auto& l : scene.lights)
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const auto& l = scene.lights[i];
         lights.push_back({{"name", l.name}, {"type", scene::toString(l.type)},
-                          {"shadow_resolution", renderer.effectiveResolution(l)}, {"shadows", l.shadow.enabled}});
+                          {"shadow_resolution", renderer.effectiveResolution(l)}, {"shadows", l.shadow.enabled},
+                          {"shadow_triangles_per_frame", i < result.shadowTriangles.size() ? result.shadowTriangles[i] : 0.0}});
+    }
     nlohmann::json stats = {
         {"device", result.device},
         {"egl_platform", context->platformName()},

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace penumbra::app {
 
@@ -24,6 +25,7 @@ struct BatchResult {
     int frames = 0;
     render::PassTimes mean;
     std::size_t shadowMemoryBytes = 0;
+    std::vector<double> shadowTriangles;  // per light: mean triangles drawn into its shadow maps per frame
     std::filesystem::path statsFile;
 };
 

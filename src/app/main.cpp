@@ -25,6 +25,9 @@ int runRender(const app::BatchJob& job) {
     std::printf("mean GPU ms per frame over %d frame(s): shadow %.2f | opaque %.2f | translucent %.2f | post %.2f | total %.2f\n",
                 r.frames, r.mean.shadowMs, r.mean.opaqueMs, r.mean.translucentMs, r.mean.postMs, r.mean.totalMs());
     std::printf("shadow-map memory: %.2f MiB\n", static_cast<double>(r.shadowMemoryBytes) / (1024.0 * 1024.0));
+    std::printf("triangles drawn into shadow maps per frame, per light:");
+    for (double t : r.shadowTriangles) std::printf(" %.0f", t);
+    std::printf("\n");
     std::printf("wrote %s/frame_0000.png .. and %s\n", job.outDir.string().c_str(), r.statsFile.string().c_str());
     return 0;
 }

@@ -46,6 +46,8 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
+            d.worldBounds = mesh.bounds.transformed(model);
+            d.triangles = mesh.parts[p].indexCount / 3;
             out.push_back(d);
         }
     }

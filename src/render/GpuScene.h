@@ -20,6 +20,8 @@ struct Draw {
     bool castsShadow;
     bool visible;
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
+    scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
+    std::size_t triangles = 0;
 };
 
 class GpuScene {

@@ -10,6 +10,23 @@
 
 namespace penumbra::render {
 
+// True when the box lies wholly outside one of the six planes of `viewProj`'s clip volume
+// (-w <= x, y, z <= w): conservative, so a caster that may reach the volume is kept.
+static bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& viewProj) {
+    if (box.empty()) return true;
+    glm::vec4 corners[8];
+    for (int i = 0; i < 8; ++i)
+        corners[i] = viewProj * glm::vec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                                          (i & 4) ? box.max.z : box.min.z, 1.0f);
+    for (int axis = 0; axis < 3; ++axis)
+        for (float side : {-1.0f, 1.0f}) {
+            bool allOutside = true;
+            for (const glm::vec4& c : corners) allOutside = allOutside && side * c[axis] > c.w;
+            if (allOutside) return true;
+        }
+    return false;
+}
+
 std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene) {
     if (!options.technique.empty()) return options.technique;
     return scene.technique.empty() ? "hard" : scene.technique;
@@ -120,10 +137,16 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.camera = &camera;
         frame.aspect = aspect;
         frame.sceneBounds = bounds;
-        frame.drawCasters = [&](const gl::Program& program, shadows::Casters casters) {
-            const bool wantTranslucent = casters == shadows::Casters::Translucent;
-            for (const Draw& d : draws)
-                if (d.castsShadow && d.translucent == wantTranslucent) gpu_.draw(d, program);
+        shadowTriangles_.assign(scene_.lights.size(), 0);
+        frame.drawCasters = [&](const gl::Program& program, const shadows::CasterSelection& selection) {
+            const bool wantTranslucent = selection.casters == shadows::Casters::Translucent;
+            for (const Draw& d : draws) {
+                if (!d.castsShadow || d.translucent != wantTranslucent) continue;
+                if (selection.cull && outsideClipVolume(d.worldBounds, *selection.cull)) continue;
+                gpu_.draw(d, program);
+                if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
+                    shadowTriangles_[static_cast<std::size_t>(selection.light)] += d.triangles;
+            }
         };
         frame.drawSurfaces = [&](const gl::Program& program, int onlyObject) {
             for (const Draw& d : draws)

@@ -70,6 +70,8 @@ public:
     void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer);
 
     const PassTimes& lastTimes() const { return times_; }
+    // Triangles drawn into shadow maps in the last frame, per light (all passes and faces).
+    const std::vector<std::size_t>& shadowTriangles() const { return shadowTriangles_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
     // The last frame's linear HDR colour (before fog and sRGB), RGBA floats, bottom row first.
     std::vector<float> readLinear() const;
@@ -100,6 +102,7 @@ private:
     gl::Framebuffer hdrFbo_;
     int targetW_ = 0, targetH_ = 0;
     shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
+    std::vector<std::size_t> shadowTriangles_;
     std::array<gl::TimerQuery, 4> timers_;
     PassTimes times_;
     std::uint32_t frameIndex_ = 0;

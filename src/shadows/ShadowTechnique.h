@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,14 +31,25 @@ namespace penumbra::shadows {
 // transmission > 0) tint (McGuire & Enderton 2011).
 enum class Casters { Opaque, Translucent };
 
+// Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip
+// volume of `cull` (a light's view-projection, one cube face's, ...) are skipped: a caster
+// outside a light's view volume cannot shadow anything inside it. nullopt draws every caster
+// (passes that project casters elsewhere, layered passes that cull per layer themselves).
+// The triangles drawn are counted for light `light` (-1: not counted).
+struct CasterSelection {
+    Casters casters = Casters::Opaque;
+    std::optional<glm::mat4> cull;
+    int light = -1;
+};
+
 // What the renderer gives a technique for one frame.
 struct ShadowFrame {
     const std::vector<scene::Light>* lights = nullptr;
     const std::vector<LightSpace>* lightSpaces = nullptr;  // one per light
     const ShadowSlots* slots = nullptr;                    // this frame's slots and sun, one per light
-    // Draws the chosen casters with `program` bound (uModel and material uniforms are set,
+    // Draws the selected casters with `program` bound (uModel and material uniforms are set,
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
-    std::function<void(const gl::Program& program, Casters casters)> drawCasters;
+    std::function<void(const gl::Program& program, const CasterSelection& selection)> drawCasters;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0) with
     // `program` bound: depth pre-passes and receiver masks of screen-space techniques.
     std::function<void(const gl::Program& program, int onlyObject)> drawSurfaces;

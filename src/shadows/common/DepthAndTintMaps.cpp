@@ -92,14 +92,14 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
                 m.depthFaces[face].bind();
                 glClearNamedFramebufferfv(m.depthFaces[face].id(), GL_DEPTH, 0, &farDepth);
                 depthProgram_.set("uLightViewProj", vp);
-                frame.drawCasters(depthProgram_, Casters::Opaque);
+                frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
             }
             if (!withTint_) continue;
             m.tintFaces[face].bind();
             glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
             const gl::ScopedPassState state(tintPass);
             tintProgram_.set("uLightViewProj", vp);
-            frame.drawCasters(tintProgram_, Casters::Translucent);
+            frame.drawCasters(tintProgram_, {Casters::Translucent, vp, static_cast<int>(i)});
         }
     }
 }

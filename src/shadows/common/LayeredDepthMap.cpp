@@ -39,7 +39,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
     glProgramUniformMatrix4fv(casters_.id(), casters_.location("uLayerViewProj[0]"), count, GL_FALSE, &viewProj[0][0][0]);
     glProgramUniform4fv(casters_.id(), casters_.location("uLayerClip[0]"), count, &planes[0].x);
     casters_.set("uLayerCount", count);
-    frame.drawCasters(casters_, Casters::Opaque);
+    frame.drawCasters(casters_, {Casters::Opaque, std::nullopt, frame.slots->sun});  // culled per layer in the geometry shader
 }
 
 DebugView LayeredDepthMap::debugView(const std::string& label) const {

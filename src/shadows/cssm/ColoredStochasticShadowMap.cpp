@@ -100,7 +100,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             if (variant_ == Variant::Rgb) {
                 const gl::ScopedPassState state(casterPass);
                 casters_.set("uChannel", -1);
-                frame.drawCasters(casters_, Casters::Translucent);
+                frame.drawCasters(casters_, {Casters::Translucent, ls.viewProj[f], static_cast<int>(i)});
                 continue;
             }
             for (int c = 0; c < 3; ++c) {  // one map per wavelength
@@ -108,7 +108,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
                 channelPass.colorWrite = glm::bvec4(c == 0, c == 1, c == 2, c == 0);
                 const gl::ScopedPassState state(channelPass);
                 casters_.set("uChannel", c);
-                frame.drawCasters(casters_, Casters::Translucent);
+                frame.drawCasters(casters_, {Casters::Translucent, ls.viewProj[f], static_cast<int>(i)});
             }
         }
     }

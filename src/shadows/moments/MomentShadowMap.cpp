@@ -119,7 +119,7 @@ void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
             const float farDepth = 1.0f;
             glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
             maps_.depthProgram().set("uLightViewProj", space.viewProj[f]);
-            frame.drawCasters(maps_.depthProgram(), Casters::Opaque);
+            frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[f], static_cast<int>(i)});
             fullscreenVao_.bind();
             m.multisampledDepth.bind(1);
         }

@@ -40,12 +40,12 @@ void PlanarProjectedShadows::renderMaps(const ShadowFrame& frame) {
             surfaces.set("uLightViewProj", mask_.viewProj());
             frame.drawSurfaces(surfaces, receiver_->object);
         }
-        flattenCasters(frame, lights[i]);
+        flattenCasters(frame, static_cast<int>(i));
     }
 }
 
-void PlanarProjectedShadows::flattenCasters(const ShadowFrame& frame, const scene::Light& light) {
-    const glm::vec4 L = homogeneousLight(light);
+void PlanarProjectedShadows::flattenCasters(const ShadowFrame& frame, int light) {
+    const glm::vec4 L = homogeneousLight((*frame.lights)[static_cast<std::size_t>(light)]);
     glm::vec4 plane = receiver_->plane;
     if (glm::dot(plane, L) < 0.0f) plane = -plane;  // the light on the positive side
     if (glm::dot(plane, L) <= 0.0f) return;           // light in the plane: no projection
@@ -66,7 +66,7 @@ void PlanarProjectedShadows::flattenCasters(const ShadowFrame& frame, const scen
     flattened_.set("uNaive", naive_ ? 1 : 0);
     flattened_.set("uOpacity", opacity_);
     flattened_.set("uPlaneEpsilon", 1e-4f * std::sqrt(receiver_->area));
-    frame.drawCasters(flattened_, Casters::Opaque);
+    frame.drawCasters(flattened_, {Casters::Opaque, std::nullopt, light});
 }
 
 void PlanarProjectedShadows::bindLookup(const gl::Program& lighting) const {

@@ -27,7 +27,7 @@ protected:
     std::vector<Parameter> declareParameters() override;
 
 private:
-    void flattenCasters(const ShadowFrame& frame, const scene::Light& light);
+    void flattenCasters(const ShadowFrame& frame, int light);
     int receiverObject_ = -1;
     bool clipToReceiver_ = true, stencilOnce_ = true, naive_ = false;
     float opacity_ = 1;

@@ -1,0 +1,52 @@
+// Per-light caster culling: a shadow pass draws only the casters whose bounds reach that light's
+// view volume (or cube face). What the camera cannot see still casts into what it can see.
+#include "GlTestSupport.h"
+
+#include "render/Offscreen.h"
+
+namespace penumbra::test {
+namespace {
+
+using render::OutputMode;
+
+// The camera looks straight down at the ground around the origin; a tall post stands well
+// outside its view, between the low sun and the ground it sees, so its long shadow falls into
+// the view. Culled by the camera it would vanish; culled by the light it stays.
+TEST(Culling, ACasterOutsideTheViewButInsideTheLightStillCasts) {
+    for (const char* technique : {"hard", "pcf-poisson16", "cssm2", "vsm"}) {
+        scene::Scene s = sceneFromJson(R"({
+          "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+          "lights": [ { "type": "directional", "direction": [-1, -0.35, 0], "shadow": { "resolution": 1024 } } ],
+          "objects": [ { "shape": "plane", "size": [40, 40] },
+                       { "name": "post", "shape": "box", "size": [0.4, 4, 0.4], "position": [9, 2, 0] } ] })");
+        const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, technique);
+        // The post's shadow runs along -x through the view's centre row.
+        int shadowed = 0;
+        for (int x = 0; x < 96; ++x) shadowed += f.at(x, 48).r < 0.5f;
+        EXPECT_GT(shadowed, 80) << technique << ": the off-screen post's shadow is missing";
+    }
+}
+
+// A point light in the middle of four boxes on its +x, -x, +z and -z sides: each cube face draws
+// only the box in front of it (+y and -y draw nothing), so far fewer than 6 x the scene's
+// triangles are drawn, and a spot light's cone leaves out the boxes behind it.
+TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 10, 0.001], "target": [0, 0, 0], "up": [0, 0, -1] },
+      "lights": [ { "type": "point", "position": [0, 1, 0], "range": 30 },
+                  { "type": "spot", "position": [0, 1, 0], "direction": [1, 0, 0], "angle_deg": 40, "range": 30 } ],
+      "objects": [ { "shape": "box", "position": [4, 1, 0] }, { "shape": "box", "position": [-4, 1, 0] },
+                   { "shape": "box", "position": [0, 1, 4] }, { "shape": "box", "position": [0, 1, -4] } ] })");
+    render::RenderOptions options;
+    options.technique = "hard";
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(64, 64);
+    renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
+    const std::size_t box = 12;  // triangles of one box
+    ASSERT_EQ(renderer.shadowTriangles().size(), 2u);
+    EXPECT_EQ(renderer.shadowTriangles()[0], 4 * box) << "each box once, in the cube face it faces";
+    EXPECT_EQ(renderer.shadowTriangles()[1], box) << "the spot looks at the +x box only";
+}
+
+}  // namespace
+}  // namespace penumbra::test
