@@ -5,6 +5,7 @@
 #include "platform/EglContext.h"
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
+#include "util/DataPaths.h"
 #include "util/Log.h"
 
 #include <chrono>
@@ -72,6 +73,7 @@ BatchResult renderBatch(const BatchJob& job) {
     nlohmann::json stats = {
         {"device", result.device},
         {"egl_platform", context->platformName()},
+        {"data_dir", paths::dataRoot().string()},
         {"scene", job.scene.string()},
         {"technique", renderer.technique().name()},
         {"transparency", render::toString(job.render.transparency)},

@@ -1,5 +1,7 @@
 #include "gl/Program.h"
 
+#include "util/DataPaths.h"
+
 #include <algorithm>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
@@ -10,10 +12,7 @@ namespace penumbra::gl {
 
 namespace fs = std::filesystem;
 
-fs::path shaderRoot() {
-    if (const char* env = std::getenv("PENUMBRA_SHADER_DIR")) return env;
-    return PENUMBRA_SHADER_DIR;
-}
+fs::path shaderRoot() { return paths::dataRoot(); }
 
 static std::string readFile(const fs::path& p, const fs::path& includer, int includerLine) {
     std::ifstream in(p, std::ios::binary);

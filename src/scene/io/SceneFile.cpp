@@ -2,6 +2,7 @@
 
 #include "scene/Shapes.h"
 #include "scene/io/ModelImporter.h"
+#include "util/DataPaths.h"
 #include "util/Error.h"
 
 #include <nlohmann/json.hpp>
@@ -403,9 +404,6 @@ Scene loadScene(const fs::path& path) {
     return parseSceneJson(ss.str(), path);
 }
 
-fs::path defaultScenePath() {
-    if (const char* env = std::getenv("PENUMBRA_SCENE_DIR")) return fs::path(env) / "default.json";
-    return fs::path(PENUMBRA_SCENE_DIR) / "default.json";
-}
+fs::path defaultScenePath() { return paths::sceneDir() / "default.json"; }
 
 }  // namespace penumbra::scene::io

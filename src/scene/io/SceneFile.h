@@ -13,7 +13,7 @@ namespace penumbra::scene::io {
 Scene loadScene(const std::filesystem::path& path);
 Scene parseSceneJson(const std::string& text, const std::filesystem::path& file);
 Scene wrapModel(const std::filesystem::path& modelFile);
-// The built-in default scene (scenes/default.json next to the sources, or PENUMBRA_SCENE_DIR).
+// The built-in default scene: default.json in paths::sceneDir() (installed, or the source tree).
 std::filesystem::path defaultScenePath();
 
 }  // namespace penumbra::scene::io
