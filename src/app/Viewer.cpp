@@ -5,10 +5,12 @@
 #include "platform/EglContext.h"
 #include "platform/GlfwWindow.h"
 #include "app/OutputFiles.h"
+#include "app/ShaderWatcher.h"
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
 #include "scene/CameraController.h"
 #include "scene/io/SceneFile.h"
+#include "util/DataPaths.h"
 #include "util/Log.h"
 
 #include <GLFW/glfw3.h>
@@ -36,6 +38,7 @@ struct ViewerState {
     bool screenshotRequested = false;
     int screenshotCount = 0;
     double frameSeconds = 0.0;  // exponentially smoothed frame time
+    std::string shaderError;    // the last live reload's compile error, "" when the shaders are good
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -88,6 +91,11 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     ImGui::Text("%.1f FPS, GPU %.1f ms", state.fps(), t.totalMs());
     ImGui::Text("shadow %.1f | opaque %.1f ms", t.shadowMs, t.opaqueMs);
     ImGui::Text("shadow memory %.1f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
+    if (!state.shaderError.empty()) {  // live editing: the last good programs keep drawing
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("shader error (last good shaders drawing):\n%s", state.shaderError.c_str());
+        ImGui::PopStyleColor();
+    }
 
     if (ImGui::CollapsingHeader("technique", ImGuiTreeNodeFlags_DefaultOpen)) {
         const std::string current = renderer.technique().name();
@@ -199,8 +207,14 @@ int runViewer(const ViewerOptions& opts) {
         return edge;
     };
 
+    ShaderWatcher shaders(paths::dataRoot());
     while (!window.shouldClose()) {
         glfwPollEvents();
+        if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
+            state.shaderError = renderer.reloadShaders();
+            if (state.shaderError.empty()) log::info("shaders reloaded");
+            else log::error("{}", state.shaderError);
+        }
         int w = 0, h = 0;
         window.framebufferSize(w, h);
         if (w == 0 || h == 0) {  // minimised: wait instead of spinning, draw nothing

@@ -41,6 +41,10 @@ static void configure(shadows::ShadowTechnique& technique, const RenderOptions& 
                                 "'; its parameters: " + (known.empty() ? "none" : known));
 }
 
+static gl::Program fullscreenProgram(const char* fragment) {
+    return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment});
+}
+
 static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
     return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
                                .fragment = "shaders/passes/lighting.frag",
@@ -68,8 +72,8 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
     lighting_ = buildLighting(*technique_);
-    resolve_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/resolve.frag"});
-    overlay_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "shaders/passes/overlay.frag"});
+    resolve_ = fullscreenProgram("shaders/passes/resolve.frag");
+    overlay_ = fullscreenProgram("shaders/passes/overlay.frag");
     lines_ = gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"});
 }
 
@@ -81,6 +85,28 @@ void Renderer::setTechnique(const std::string& name) {
     lighting_ = std::move(lighting);
     oit_.reset();  // its lighting variants include the old technique's lookup
     options_.technique = name;
+}
+
+std::string Renderer::reloadShaders() {
+    try {
+        auto technique = shadows::createTechnique(technique_->name());
+        shadows::ParameterValues current;
+        for (const auto& p : technique_->parameters()) current.emplace_back(p.name, p.text());
+        shadows::applyParameters(technique->parameters(), current);
+        gl::Program lighting = buildLighting(*technique);
+        gl::Program resolve = fullscreenProgram("shaders/passes/resolve.frag");
+        gl::Program overlay = fullscreenProgram("shaders/passes/overlay.frag");
+        gl::Program lines = gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"});
+        technique_ = std::move(technique);
+        lighting_ = std::move(lighting);
+        resolve_ = std::move(resolve);
+        overlay_ = std::move(overlay);
+        lines_ = std::move(lines);
+        oit_.reset();  // rebuilt from the new files on first use
+        return "";
+    } catch (const std::exception& e) {
+        return e.what();
+    }
 }
 
 void Renderer::setOutputMode(OutputMode mode, int debugLight) {

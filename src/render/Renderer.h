@@ -60,6 +60,11 @@ public:
     // active when the new one fails.
     void setTechnique(const std::string& name);
     void setOutputMode(OutputMode mode, int debugLight = 0);
+    // Rebuilds every program from the shader files as they are now (live editing): the
+    // technique (keeping its current parameter values) and the renderer's own passes. All or
+    // nothing: on a compile error nothing changes, the last good programs keep drawing, and the
+    // error is returned ("file:line: ..."); "" on success.
+    std::string reloadShaders();
     RenderOptions& options() { return options_; }
     scene::Scene& scene() { return scene_; }
     const shadows::ShadowTechnique& technique() const { return *technique_; }
