@@ -5,7 +5,8 @@
 // occluder per channel. (The thesis's pseudocode prints the comparison reversed; its text and
 // CSSM2 agree with this.)
 //   CSSM2: one pass, one ξ per fragment shared by the channels.
-//   CSSM1: one pass per channel (uChannel), independent ξ per channel; opaque casters too.
+//   CSSM1: one pass per channel (uChannel), independent ξ per channel.
+// Only translucent casters come here; the opaque ones are in the depth map this pass tests against.
 #include "shaders/common/material.glsl"
 #include "shaders/common/random.glsl"
 #include "shaders/common/depth.glsl"

@@ -2,7 +2,8 @@
 // X += (map.rgb(s + Δ) > s.z) over n taps, received light X·L/n. Filters compared in the
 // thesis (CssmFilter.h): PCF 3x3 (9 taps), Poisson 16, Poisson 20, uniform random 30, and the
 // 13-tap cross-plus-square {(0,0), (±3,±3), (±4,0), (0,±4), (±7,0), (0,±7)} texels, every tap
-// jittered by δ(s) = ([(5 s) mod 2] - 1) / (6 (‖∂s/∂x‖₁, ‖∂s/∂y‖₁)).
+// jittered by δ(s) = ([(5 s) mod 2] - 1) / (6 (‖∂s/∂x‖₁, ‖∂s/∂y‖₁)); and box16 / box64, which
+// count the whole stratified tile (caster.frag) the receiver falls in.
 #include "src/shadows/common/glsl/kernels.glsl"
 #include "src/shadows/cssm/CssmFilter.h"
 
