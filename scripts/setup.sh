@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs (skips the install when all are present),
-# then configures and builds into ./build. Used by run.sh and test.sh.
+# then configures and builds into ./build (./build-sanitize with --sanitize). Used by run.sh and test.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,5 +22,12 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 BUILD_TYPE="${PENUMBRA_BUILD_TYPE:-RelWithDebInfo}"
+if [ "${1:-}" = "--sanitize" ]; then
+  # AddressSanitizer + UndefinedBehaviorSanitizer (any UB report aborts), in a folder of its own.
+  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
+    -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" >/dev/null
+  cmake --build build-sanitize -j "$(nproc)"
+  exit 0
+fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
 cmake --build build -j "$(nproc)"

@@ -1,5 +1,10 @@
 # The Debian package: `cpack -G DEB` builds penumbra_*.deb, which holds the binary under /usr/bin
 # and its data under /usr/share/penumbra, and depends on the libraries the binary links.
+# The packaging tools (cpack, dpkg-shlibdeps, file, dpkg-deb) are not ours: they run without the
+# sanitizer runtime that `scripts/test.sh --sanitize` preloads for the project's own binaries.
+unset(ENV{LD_PRELOAD})
+unset(ENV{ASAN_OPTIONS})
+unset(ENV{UBSAN_OPTIONS})
 file(GLOB old "${BUILD}/penumbra_*.deb")
 if(old)
   file(REMOVE ${old})
