@@ -6,6 +6,7 @@
 #include "render/LightBlock.h"
 #include "util/Log.h"
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::render {
@@ -164,11 +165,16 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.aspect = aspect;
         frame.sceneBounds = bounds;
         shadowTriangles_.assign(scene_.lights.size(), 0);
+        const auto selected = [](const Draw& d, const shadows::CasterSelection& selection) {
+            return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
+                   !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
+        };
+        frame.countCasters = [&](const shadows::CasterSelection& selection) {
+            return static_cast<std::size_t>(std::count_if(draws.begin(), draws.end(), [&](const Draw& d) { return selected(d, selection); }));
+        };
         frame.drawCasters = [&](const gl::Program& program, const shadows::CasterSelection& selection) {
-            const bool wantTranslucent = selection.casters == shadows::Casters::Translucent;
             for (const Draw& d : draws) {
-                if (!d.castsShadow || d.translucent != wantTranslucent) continue;
-                if (selection.cull && outsideClipVolume(d.worldBounds, *selection.cull)) continue;
+                if (!selected(d, selection)) continue;
                 gpu_.draw(d, program);
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
                     shadowTriangles_[static_cast<std::size_t>(selection.light)] += d.triangles;

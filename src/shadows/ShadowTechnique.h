@@ -50,6 +50,8 @@ struct ShadowFrame {
     // Draws the selected casters with `program` bound (uModel and material uniforms are set,
     // the diffuse texture is on unit 0); the caller sets the light's matrices.
     std::function<void(const gl::Program& program, const CasterSelection& selection)> drawCasters;
+    // How many caster draws `drawCasters` would issue for `selection` (0: the pass can be skipped).
+    std::function<std::size_t(const CasterSelection& selection)> countCasters;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0) with
     // `program` bound: depth pre-passes and receiver masks of screen-space techniques.
     std::function<void(const gl::Program& program, int onlyObject)> drawSurfaces;

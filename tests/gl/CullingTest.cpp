@@ -48,5 +48,31 @@ TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
     EXPECT_EQ(renderer.shadowTriangles()[1], box) << "the spot looks at the +x box only";
 }
 
+// A light with no translucent caster in view skips its tint clear and pass once the map is
+// white. A pane that leaves the spot's cone must not leave its tint behind, and its return must
+// bring the tint back.
+TEST(Culling, ATranslucentCasterLeavingTheLightLeavesNoStaleTint) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 30 },
+      "lights": [ { "type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "angle_deg": 40, "range": 20 } ],
+      "objects": [ { "shape": "plane", "size": [10, 10] },
+                   { "shape": "plane", "size": [1, 1], "material": { "transmission": [0.1, 0.9, 0.1] },
+                     "animation": [[0, 0, 2, 0], [1, 8, 2, 0], [2, 0, 2, 0]] } ] })");
+    render::RenderOptions options;
+    options.technique = "hard";
+    options.output = OutputMode::Visibility;
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(32, 32);
+    auto centreAt = [&](float time) {
+        renderer.render(time, s.camera, 32, 32, target.framebuffer());
+        return Frame{32, 32, renderer.readLinear()}.at(16, 16);
+    };
+    const glm::vec3 tinted(0.1f, 0.9f, 0.1f);
+    EXPECT_LT(glm::length(centreAt(0.0f) - tinted), 0.02f) << "the pane tints the ground under it";
+    EXPECT_EQ(centreAt(1.0f), glm::vec3(1.0f)) << "the pane left the cone: no stale tint";
+    EXPECT_EQ(centreAt(1.0f), glm::vec3(1.0f)) << "and none on the frames after (the skipped passes)";
+    EXPECT_LT(glm::length(centreAt(2.0f) - tinted), 0.02f) << "the pane is back";
+}
+
 }  // namespace
 }  // namespace penumbra::test

@@ -48,6 +48,7 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
         depthOnly.checkComplete("shadow depth map " + std::to_string(res));
         m.depthFaces.push_back(std::move(depthOnly));
         m.tintFaces.push_back(std::move(withTint));
+        m.tintWhite.push_back(!withTint_);  // a new map's contents are undefined until cleared
     }
 }
 
@@ -95,11 +96,16 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
                 frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
             }
             if (!withTint_) continue;
-            m.tintFaces[face].bind();
+            const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
+            const bool anyTranslucent = !frame.countCasters || frame.countCasters(translucent) > 0;
+            if (!anyTranslucent && m.tintWhite[face]) continue;  // still white: no clear, no pass
             glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
+            m.tintWhite[face] = !anyTranslucent;
+            if (!anyTranslucent) continue;
+            m.tintFaces[face].bind();
             const gl::ScopedPassState state(tintPass);
             tintProgram_.set("uLightViewProj", vp);
-            frame.drawCasters(tintProgram_, {Casters::Translucent, vp, static_cast<int>(i)});
+            frame.drawCasters(tintProgram_, translucent);
         }
     }
 }

@@ -24,6 +24,9 @@ public:
         // Per face (6 for cubes): depth only for the opaque pass (llvmpipe then never touches
         // the colour tiles), depth + colour for the translucent pass.
         std::vector<gl::Framebuffer> depthFaces, tintFaces;
+        // Per face: the tint map is known to hold white (cleared, nothing translucent drawn since),
+        // so a frame with no translucent caster in the face's view skips its clear and pass.
+        std::vector<bool> tintWhite;
     };
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
