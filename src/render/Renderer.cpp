@@ -46,6 +46,16 @@ static gl::Program fullscreenProgram(const char* fragment) {
     return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment});
 }
 
+// The renderer's own passes (resolve, debug overlay, debug lines), built together so that a live
+// reload replaces all of them or none.
+struct PassPrograms {
+    gl::Program resolve, overlay, lines;
+};
+static PassPrograms buildPassPrograms() {
+    return {fullscreenProgram("shaders/passes/resolve.frag"), fullscreenProgram("shaders/passes/overlay.frag"),
+            gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"})};
+}
+
 static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
     return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
                                .fragment = "shaders/passes/lighting.frag",
@@ -73,9 +83,10 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
     lighting_ = buildLighting(*technique_);
-    resolve_ = fullscreenProgram("shaders/passes/resolve.frag");
-    overlay_ = fullscreenProgram("shaders/passes/overlay.frag");
-    lines_ = gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"});
+    PassPrograms passes = buildPassPrograms();
+    resolve_ = std::move(passes.resolve);
+    overlay_ = std::move(passes.overlay);
+    lines_ = std::move(passes.lines);
 }
 
 void Renderer::setTechnique(const std::string& name) {
@@ -95,14 +106,12 @@ std::string Renderer::reloadShaders() {
         for (const auto& p : technique_->parameters()) current.emplace_back(p.name, p.text());
         shadows::applyParameters(technique->parameters(), current);
         gl::Program lighting = buildLighting(*technique);
-        gl::Program resolve = fullscreenProgram("shaders/passes/resolve.frag");
-        gl::Program overlay = fullscreenProgram("shaders/passes/overlay.frag");
-        gl::Program lines = gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"});
+        PassPrograms passes = buildPassPrograms();
         technique_ = std::move(technique);
         lighting_ = std::move(lighting);
-        resolve_ = std::move(resolve);
-        overlay_ = std::move(overlay);
-        lines_ = std::move(lines);
+        resolve_ = std::move(passes.resolve);
+        overlay_ = std::move(passes.overlay);
+        lines_ = std::move(passes.lines);
         oit_.reset();  // rebuilt from the new files on first use
         return "";
     } catch (const std::exception& e) {
