@@ -1,6 +1,6 @@
 #include "app/ReferenceCommands.h"
 
-#include "app/OutputFiles.h"
+#include "util/OutputFiles.h"
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "reference/Comparison.h"
@@ -33,7 +33,7 @@ Session open(const ReportJob& job) {
         throw std::invalid_argument(job.scene.string() + ": the scene has no lights: there are no shadows to compare");
     s.context = platform::EglContext::create(job.eglPlatform);
     gl::enableDebugOutput();
-    createOutputDirectory(job.outDir);
+    util::createOutputDirectory(job.outDir);
     return s;
 }
 
@@ -49,16 +49,16 @@ int runReference(const ReportJob& job) {
     Session s = open(job);
     Comparison cmp(s.scene, job.width, job.height, job.time);
     cmp.traceReference(job.samples, true);
-    writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
+    util::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
     json lights = json::array();
     for (std::size_t l = 0; l < s.scene.lights.size(); ++l) {
         const std::string file = "visibility_" + std::to_string(l) + "_" + safeName(s.scene.lights[l].name) + ".png";
-        writePng(job.outDir / file, job.width, job.height,
+        util::writePng(job.outDir / file, job.width, job.height,
                          encodeLinear(cmp.referenceVisibility()[l], job.width, job.height));
         lights.push_back({{"name", s.scene.lights[l].name}, {"visibility", file}, {"size", s.scene.lights[l].size}});
     }
     const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    writeJson(job.outDir / "reference.json",
+    util::writeJson(job.outDir / "reference.json",
               {{"scene", job.scene.string()}, {"width", job.width}, {"height", job.height}, {"time", job.time},
                {"samples", job.samples}, {"threads", threads}, {"triangles", s.scene.triangleCount()},
                {"seconds", cmp.referenceSeconds()}, {"lights", lights}});
@@ -77,7 +77,7 @@ int runCompare(const ReportJob& job) {
     Comparison cmp(s.scene, job.width, job.height, job.time);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());
-    writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);
+    util::writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);
 
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
@@ -87,8 +87,8 @@ int runCompare(const ReportJob& job) {
         const TechniqueScore sc = cmp.evaluate(name, job.render.shadowResolution, job.timedFrames, job.render.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
         heat.push_back(cmp.heatMap(sc));
-        writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
-        writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
+        util::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
+        util::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
         std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
                     sc.colourError, sc.noise, sc.shadowMs, sc.totalMs, mib);
@@ -113,9 +113,9 @@ int runCompare(const ReportJob& job) {
     for (const auto& c : cells) tiles.push_back(&c);
     int mw = 0, mh = 0;
     const auto sideBySide = montage(tiles, tw, 2 * th, std::min<int>(5, static_cast<int>(cells.size())), mw, mh);
-    writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
+    util::writePng(job.outDir / "side_by_side.png", mw, mh, sideBySide);
 
-    writeJson(job.outDir / "compare.json",
+    util::writeJson(job.outDir / "compare.json",
               {{"device", platform::glDeviceDescription()}, {"scene", job.scene.string()}, {"width", job.width},
                {"height", job.height}, {"time", job.time}, {"samples", job.samples},
                {"shadow_resolution", job.render.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},

@@ -1,6 +1,6 @@
 #include "app/RenderCommand.h"
 
-#include "app/OutputFiles.h"
+#include "util/OutputFiles.h"
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "render/Offscreen.h"
@@ -29,11 +29,11 @@ BatchResult renderBatch(const BatchJob& job) {
     options.strictParameters = true;
     render::Renderer renderer(scene, options);
     render::OffscreenTarget target(job.width, job.height);
-    createOutputDirectory(job.outDir);
+    util::createOutputDirectory(job.outDir);
 
     // One untimed warm-up frame: llvmpipe compiles shaders at first draw, and its first timer
     // query of a context reads garbage.
-    renderer.render(job.startTime, scene.camera, job.width, job.height, target.framebuffer());
+    renderer.render(job.startTime, scene.cameraAt(job.startTime), job.width, job.height, target.framebuffer());
 
     BatchResult result;
     result.device = platform::glDeviceDescription();
@@ -41,13 +41,13 @@ BatchResult renderBatch(const BatchJob& job) {
     for (int i = 0; i < job.frames; ++i) {
         const float t = job.startTime + static_cast<float>(i) / job.fps;
         const auto cpuStart = std::chrono::steady_clock::now();
-        renderer.render(t, scene.camera, job.width, job.height, target.framebuffer());
+        renderer.render(t, scene.cameraAt(t), job.width, job.height, target.framebuffer());  // along camera_path, if any
         const std::vector<std::uint8_t> pixels = target.readRgba8();
         const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.png", i);
-        writePng(job.outDir / name, job.width, job.height, pixels);
-        const PassTimes& p = renderer.lastTimes();
+        util::writePng(job.outDir / name, job.width, job.height, pixels);
+        const PassTimes& p = renderer.waitForTimes();  // the read-back has synchronised anyway
         const auto& triangles = renderer.shadowTriangles();
         if (result.shadowTriangles.size() < triangles.size()) result.shadowTriangles.resize(triangles.size());
         for (std::size_t l = 0; l < triangles.size(); ++l)
@@ -96,7 +96,7 @@ BatchResult renderBatch(const BatchJob& job) {
         {"frames", frames},
     };
     result.statsFile = job.outDir / "stats.json";
-    writeJson(result.statsFile, stats);
+    util::writeJson(result.statsFile, stats);
     return result;
 }
 

@@ -16,8 +16,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
                 return shadows::isKnownTechnique(name) ? std::string()
                                                        : "unknown shadow technique '" + name + "'; known: " + shadows::knownTechniqueNames();
             });
-    command.add_option("--shadow-res", options.shadowResolution, "shadow-map resolution for every light")
-        ->check(CLI::Range(16, 16384));
+    if (which.shadowResolution)
+        command.add_option("--shadow-res", options.shadowResolution, "shadow-map resolution for every light")
+            ->check(CLI::Range(16, 16384));
     command.add_option_function<std::vector<std::string>>(
         "--param",
         [&options](const std::vector<std::string>& texts) {
@@ -43,6 +44,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
 
 void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize) {
     command.add_option("scene", scene, "scene file (.json) or model file; default: the built-in scene");
+    addSize(command, width, height, defaultSize);
+}
+
+void addSize(CLI::App& command, int& width, int& height, const char* defaultSize) {
     command.add_option_function<std::string>(
         "--size",
         [&width, &height](const std::string& text) {

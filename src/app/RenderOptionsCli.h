@@ -11,6 +11,7 @@ namespace penumbra::app {
 
 struct RenderCli {
     bool technique = true;     // --technique NAME
+    bool shadowResolution = true;  // --shadow-res N
     bool overlay = true;       // --overlay
     bool transparency = true;  // --transparency MODE, --peel-layers N
 };
@@ -20,6 +21,8 @@ struct RenderCli {
 void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderCli which = {});
 // The positional scene and --size WxH.
 void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize);
+// --size WxH alone.
+void addSize(CLI::App& command, int& width, int& height, const char* defaultSize);
 // --egl-platform auto | surfaceless | device.
 void addEglPlatform(CLI::App& command, std::string& platform);
 

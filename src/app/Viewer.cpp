@@ -4,7 +4,7 @@
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "platform/GlfwWindow.h"
-#include "app/OutputFiles.h"
+#include "util/OutputFiles.h"
 #include "app/ShaderWatcher.h"
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
@@ -163,7 +163,7 @@ void saveScreenshot(const ViewerOptions& opts, ViewerState& state, int w, int h)
     char name[64];
     std::snprintf(name, sizeof name, "screenshot_%03d.png", state.screenshotCount++);
     const auto file = opts.screenshotDir / name;
-    writePng(file, w, h, render::readFramebufferRgba8(0, w, h));
+    util::writePng(file, w, h, render::readFramebufferRgba8(0, w, h));
     std::printf("penumbra: saved %s\n", file.string().c_str());
 }
 

@@ -1,4 +1,6 @@
 // penumbra command line: parses arguments and calls the core. No GL calls here.
+#include "app/BenchCommand.h"
+#include "bench/Suites.h"
 #include "app/ReferenceCommands.h"
 #include "app/RenderCommand.h"
 #include "app/RenderOptionsCli.h"
@@ -76,6 +78,61 @@ int main(int argc, char** argv) {
     app::addRenderOptions(*cmp, report.render, {.technique = false, .overlay = false, .transparency = false});
     cmp->add_option("--timed-frames", report.timedFrames, "frames timed per technique (default 3)")->check(CLI::Range(1, 1000));
 
+    auto* benchCmd = cli.add_subcommand("bench", "measure speed and memory: frames back to back, report in bench.json, bench.csv, report.html");
+    app::BenchJob bench;
+    for (int i = 0; i < argc; ++i) bench.commandLine.emplace_back(argv[i]);
+    benchCmd->add_option("scenes", bench.scenes, "scene or model files (default: the built-in scene)");
+    benchCmd->add_option_function<std::string>(
+        "--techniques",
+        [&bench](const std::string& list) {
+            std::stringstream in(list);
+            for (std::string name; std::getline(in, name, ',');) {
+                if (name.empty()) continue;
+                if (name != "all" && name != bench::kFloorDepth && name != bench::kFloorLambert && !shadows::isKnownTechnique(name))
+                    throw CLI::ValidationError("--techniques", "unknown shadow technique '" + name + "'; known: all, " +
+                                                                   shadows::knownTechniqueNames() + ", floor-depth, floor-lambert");
+                bench.techniques.push_back(name);
+            }
+        },
+        "comma-separated techniques, or all (default: the scene's own)");
+    benchCmd->add_option_function<std::string>(
+        "--shadow-res",
+        [&bench](const std::string& list) {
+            std::stringstream in(list);
+            for (std::string n; std::getline(in, n, ',');) {
+                char* end = nullptr;
+                const long v = std::strtol(n.c_str(), &end, 10);
+                if (n.empty() || *end || v < 16 || v > 16384)
+                    throw CLI::ValidationError("--shadow-res", "expected sizes within 16..16384 like 256,1024,4096, got '" + n + "'");
+                bench.shadowResolutions.push_back(static_cast<int>(v));
+            }
+        },
+        "comma-separated shadow-map resolutions (default: each light's own)");
+    {
+        std::vector<std::string> suiteNames = bench::suiteNames();
+        benchCmd->add_option("--suite", bench.suites, "named suite(s): cssm-table, osg-tables, all-techniques, floor")
+            ->check(CLI::IsMember(suiteNames));
+    }
+    app::addSize(*benchCmd, bench.settings.width, bench.settings.height, "1280x720");
+    auto* seconds = benchCmd->add_option("--seconds", bench.settings.seconds, "measure each case this long (default 2)")
+                        ->check(CLI::PositiveNumber);
+    benchCmd->add_option("--frames", bench.settings.frames, "measure each case this many frames instead")
+        ->check(CLI::Range(1, 1000000))->excludes(seconds);
+    benchCmd->add_option("--warmup-seconds", bench.settings.warmupSeconds, "warm up at least this long, then until frame times settle (default 1)")
+        ->check(CLI::Range(0.0, 600.0));
+    benchCmd->add_option("--out", bench.outDir, "output folder (default ./bench-out)");
+    benchCmd->add_option("--baseline", bench.baseline, "an earlier bench.json: adds ratios against it")->check(CLI::ExistingFile);
+    benchCmd->add_flag("--calibrate", bench.settings.calibrate, "check every pass's timer query against a glFinish wall clock");
+    benchCmd->add_flag("--quality", bench.quality, "add compare's metrics and heat maps (ray-traced reference of the first scene)");
+    benchCmd->add_option("--samples", bench.samples, "reference samples per pixel for --quality (default 16)")->check(CLI::Range(1, 4096));
+    benchCmd->add_flag("!--no-images", bench.settings.images, "no picture per case");
+    benchCmd->add_option_function<std::string>(
+        "--malloc", [&bench](const std::string& m) { bench.tunedMalloc = m == "tuned"; },
+        "tuned (default: keep llvmpipe's memory mapped, see PLATFORM.md) | default (glibc as configured)")
+        ->check(CLI::IsMember({"tuned", "default"}));
+    app::addRenderOptions(*benchCmd, bench.settings.render, {.technique = false, .shadowResolution = false, .overlay = false});
+    app::addEglPlatform(*benchCmd, bench.eglPlatform);
+
     auto* techniques = cli.add_subcommand("techniques", "list the shadow techniques");
     bool verbose = false;
     techniques->add_flag("--verbose", verbose, "with every parameter: kind, range, default and help (needs an EGL context)");
@@ -88,6 +145,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*techniques) return app::printTechniques(verbose);
+        if (*benchCmd) return app::runBench(bench);
         if (*ref || *cmp) {
             report.scene = sceneOrDefault(report.scene);
             if (report.outDir.empty()) report.outDir = *ref ? "reference" : "compare";

@@ -10,6 +10,7 @@ public:
     TimerQuery();
     void begin() { glBeginQuery(GL_TIME_ELAPSED, object_.id()); }
     void end() { glEndQuery(GL_TIME_ELAPSED); }
+    GLuint id() const { return object_.id(); }
     // Blocks until the result is available; returns milliseconds.
     double milliseconds() const;
 

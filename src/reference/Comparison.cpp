@@ -72,8 +72,9 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
     if (timedFrames > 0) renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());  // warm-up
     for (int f = 0; f < timedFrames; ++f) {
         renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());
-        score.shadowMs += renderer.lastTimes().shadowMs / timedFrames;
-        score.totalMs += renderer.lastTimes().totalMs() / timedFrames;
+        const render::PassTimes& times = renderer.waitForTimes();
+        score.shadowMs += times.shadowMs / timedFrames;
+        score.totalMs += times.totalMs() / timedFrames;
     }
     score.memoryBytes = renderer.shadowMemoryBytes();
 

@@ -162,9 +162,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
     gl::applyPassState({});
+    timer_.beginFrame(frameIndex_);
     {
         gl::DebugGroup group("shadow maps");
-        timers_[0].begin();
+        timer_.begin(Pass::Shadow);
         shadows::ShadowFrame frame;
         frame.lights = &scene_.lights;
         frame.lightSpaces = &spaces;
@@ -198,7 +199,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.time = time;
         frame.viewport = {width, height};
         technique_->renderMaps(frame);
-        timers_[0].end();
+        timer_.end(Pass::Shadow);
     }
 
     hdrFbo_.bind();
@@ -210,14 +211,14 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     glClearNamedFramebufferfv(hdrFbo_.id(), GL_DEPTH, 0, &farDepth);
     {
         gl::DebugGroup group("opaque");
-        timers_[1].begin();
+        timer_.begin(Pass::Opaque);
         drawSurfaces(draws, false, camera, aspect);
         if (options_.debugOverlay) drawDebugLines(camera, aspect);
-        timers_[1].end();
+        timer_.end(Pass::Opaque);
     }
     {
         gl::DebugGroup group("translucent");
-        timers_[2].begin();
+        timer_.begin(Pass::Translucent);
         // Debug channels show the nearest opaque surface only.
         const TransparencyMode mode = options_.transparency;
         if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
@@ -228,16 +229,16 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                          [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
                          height);
         }
-        timers_[2].end();
+        timer_.end(Pass::Translucent);
     }
     {
         gl::DebugGroup group("resolve");
-        timers_[3].begin();
+        timer_.begin(Pass::Post);
         resolve(target, width, height, camera, aspect);
         if (options_.debugOverlay) drawOverlay(target, width, height);
-        timers_[3].end();
+        timer_.end(Pass::Post);
     }
-    times_ = {timers_[0].milliseconds(), timers_[1].milliseconds(), timers_[2].milliseconds(), timers_[3].milliseconds()};
+    timer_.endFrame();
 }
 
 // The technique's world-space lines (cascade frusta, ...), depth-tested against the scene.

@@ -7,8 +7,8 @@
 #include "gl/Program.h"
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
-#include "gl/TimerQuery.h"
 #include "gl/VertexArray.h"
+#include "render/FrameTimer.h"
 #include "render/GpuScene.h"
 #include "render/PlaceholderTextures.h"
 #include "render/Transparency.h"
@@ -46,11 +46,6 @@ struct RenderOptions {
 // The technique `options` asks for on `scene`: its own, else the scene's, else "hard".
 std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene);
 
-struct PassTimes {
-    double shadowMs = 0, opaqueMs = 0, translucentMs = 0, postMs = 0;
-    double totalMs() const { return shadowMs + opaqueMs + translucentMs + postMs; }
-};
-
 class Renderer {
 public:
     // `scene` must outlive the renderer; lights may be edited between frames.
@@ -74,7 +69,14 @@ public:
     // A 0x0 size (minimised window) renders nothing.
     void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer);
 
-    const PassTimes& lastTimes() const { return times_; }
+    // GPU times per pass come from a ring of timer queries, a few frames late (render/FrameTimer.h).
+    // The newest finished frame's, without waiting:
+    const PassTimes& lastTimes() const { return timer_.latest(); }
+    // Waits for the last rendered frame's times (for callers that have synchronised anyway).
+    const PassTimes& waitForTimes() { return timer_.waitForAll().gpu; }
+    // The query ring itself: every finished frame's times, calibration (benchmarks).
+    FrameTimer& frameTimer() { return timer_; }
+    std::uint64_t framesRendered() const { return frameIndex_; }
     // Triangles drawn into shadow maps in the last frame, per light (all passes and faces).
     const std::vector<std::size_t>& shadowTriangles() const { return shadowTriangles_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
@@ -108,8 +110,7 @@ private:
     int targetW_ = 0, targetH_ = 0;
     shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
     std::vector<std::size_t> shadowTriangles_;
-    std::array<gl::TimerQuery, 4> timers_;
-    PassTimes times_;
+    FrameTimer timer_;
     std::uint32_t frameIndex_ = 0;
 };
 

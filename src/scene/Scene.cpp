@@ -37,4 +37,12 @@ bool Scene::animated() const {
     return false;
 }
 
+Camera Scene::cameraAt(float time) const {
+    Camera c = camera;
+    if (!cameraPath.position.empty()) c.position = cameraPath.position.sample(time);
+    if (!cameraPath.target.empty()) c.target = cameraPath.target.sample(time);
+    if (glm::length(c.position - c.target) <= 1e-6f) c.target = c.position + (camera.target - camera.position);
+    return c;
+}
+
 }  // namespace penumbra::scene

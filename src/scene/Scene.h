@@ -28,6 +28,14 @@ struct Object {
     glm::mat4 transformAt(float time) const;
 };
 
+// A flight through the scene for benchmarks and recordings: looping keyframes of the eye and of
+// the point it looks at (either may be absent: the camera's own stays).
+struct CameraPath {
+    Track position;
+    Track target;
+    bool empty() const { return position.empty() && target.empty(); }
+};
+
 struct Fog {
     bool enabled = false;
     float start = 0.0f, end = 0.0f;  // distance from the camera
@@ -36,6 +44,7 @@ struct Fog {
 struct Scene {
     std::filesystem::path source;  // file it came from (empty for code-built scenes)
     Camera camera;
+    CameraPath cameraPath;
     glm::vec3 ambient{0.08f};
     glm::vec3 background{0.05f, 0.06f, 0.08f};
     Fog fog;
@@ -50,6 +59,8 @@ struct Scene {
     Bounds boundsAt(float time) const;  // world bounds of every object at `time`
     std::size_t triangleCount() const;
     bool animated() const;
+    // The camera at `time`: `camera` moved along `cameraPath` (unchanged without one).
+    Camera cameraAt(float time) const;
 };
 
 }  // namespace penumbra::scene

@@ -147,6 +147,27 @@ TEST(SceneFile, BadValuesAreRejected) {
               std::string::npos);
 }
 
+TEST(SceneFile, CameraPathMovesEyeAndTarget) {
+    const Scene s = parse(R"({ "camera": { "position": [0, 2, 5], "target": [0, 0, 0] },
+        "camera_path": { "position": [[0, 0, 2, 5], [1, 5, 2, 0], [2, 0, 2, 5]] },
+        "objects": [ { "shape": "box" } ] })");
+    EXPECT_EQ(s.cameraAt(0.0f).position, glm::vec3(0, 2, 5));
+    EXPECT_NEAR(s.cameraAt(1.0f).position.x, 5.0f, 1e-5f);  // passes through every key
+    EXPECT_EQ(s.cameraAt(1.0f).target, glm::vec3(0.0f));     // no target keys: the camera's own
+    EXPECT_EQ(s.cameraAt(2.0f).position, s.cameraAt(0.0f).position);  // loops
+    const Scene still = parse(R"({ "objects": [ { "shape": "box" } ] })");
+    EXPECT_EQ(still.cameraAt(3.0f).position, still.camera.position);
+    EXPECT_NE(errorOf([] { parse(R"({ "camera_path": {}, "objects": [ { "shape": "box" } ] })"); })
+                  .find("needs 'position' or 'target'"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { parse(R"({ "camera_path": { "target": [[0, 1, 2]] }, "objects": [ { "shape": "box" } ] })"); })
+                  .find("[t, x, y, z]"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { parse(R"({ "camera_path": { "positon": [] }, "objects": [ { "shape": "box" } ] })"); })
+                  .find("did you mean 'position'"),
+              std::string::npos);
+}
+
 TEST(SceneFile, MissingModelNamesTheModelFile) {
     const std::string e = errorOf([] { loadScene(kData / "missing_model.json"); });
     EXPECT_NE(e.find("no/such/model.obj"), std::string::npos) << e;

@@ -324,11 +324,19 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
         throw InputError(file, line, "column " + col + ": invalid JSON: " + what);
     }
     const Reader r(text, file);
-    r.allowKeys(doc, "", {"name", "description", "camera", "ambient", "background", "fog", "lights", "objects",
-                          "technique"});
+    r.allowKeys(doc, "", {"name", "description", "camera", "camera_path", "ambient", "background", "fog", "lights",
+                          "objects", "technique"});
     Scene scene;
     scene.source = file;
     if (doc.contains("camera")) readCamera(r, doc["camera"], scene.camera);
+    if (doc.contains("camera_path")) {
+        const json& path = doc["camera_path"];
+        r.allowKeys(path, "camera_path", {"position", "target"});
+        if (!path.contains("position") && !path.contains("target"))
+            r.fail("", "camera_path", "'camera_path' needs 'position' or 'target' keyframes");
+        if (path.contains("position")) scene.cameraPath.position = readTrack(r, path["position"], "camera_path", "position");
+        if (path.contains("target")) scene.cameraPath.target = readTrack(r, path["target"], "camera_path", "target");
+    }
     scene.ambient = r.vec3(doc, "ambient", "", scene.ambient);
     scene.background = r.vec3(doc, "background", "", scene.background);
     scene.technique = r.string(doc, "technique", "", "");

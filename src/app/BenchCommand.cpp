@@ -1,0 +1,172 @@
+#include "app/BenchCommand.h"
+
+#include "bench/Report.h"
+#include "bench/Suites.h"
+#include "gl/Debug.h"
+#include "platform/EglContext.h"
+#include "reference/Comparison.h"
+#include "scene/io/SceneFile.h"
+#include "util/Log.h"
+
+#include <GitRevision.h>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <malloc.h>
+#include <set>
+#include <unistd.h>
+
+namespace penumbra::app {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// glibc gives llvmpipe's per-frame binning memory back to the kernel and faults it in again,
+// which made the same pass 2-5x slower in some processes than in others (PLATFORM.md, "Timing
+// on llvmpipe"). Keeping it mapped makes runs comparable; the report records what was in force.
+json configureMalloc(bool tuned) {
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+    json m = {{"mode", tuned ? "tuned" : "default"}, {"GLIBC_TUNABLES", tunables ? json(tunables) : json(nullptr)}};
+    if (tuned) {
+        mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+        mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+        mallopt(M_TOP_PAD, 256 * 1024 * 1024);
+        m["mallopt"] = {{"M_MMAP_THRESHOLD", 32 * 1024 * 1024}, {"M_TRIM_THRESHOLD", std::numeric_limits<int>::max()},
+                        {"M_TOP_PAD", 256 * 1024 * 1024}};
+    }
+    return m;
+}
+
+std::string nowIso() {
+    const std::time_t t = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+    return text;
+}
+
+std::vector<bench::BenchCase> plan(const BenchJob& job) {
+    std::vector<bench::BenchCase> cases;
+    for (const std::string& suite : job.suites)
+        for (bench::BenchCase c : bench::suiteCases(suite, job.outDir / "scenes")) cases.push_back(std::move(c));
+    if (!job.suites.empty() && job.scenes.empty() && job.techniques.empty()) return cases;
+
+    std::vector<fs::path> scenes = job.scenes;
+    if (scenes.empty()) scenes.push_back(scene::io::defaultScenePath());
+    std::vector<std::string> techniques = job.techniques;
+    if (techniques.size() == 1 && techniques.front() == "all") {
+        techniques.clear();
+        for (const auto& t : shadows::techniqueRegistry()) techniques.push_back(t.name);
+    }
+    if (techniques.empty()) techniques.push_back("");  // the scene's own
+    std::vector<int> resolutions = job.shadowResolutions;
+    if (resolutions.empty()) resolutions.push_back(0);
+    for (const fs::path& scene : scenes)
+        for (const std::string& technique : techniques)
+            for (int res : resolutions) cases.push_back({"", scene, technique, res, {}, ""});
+    return cases;
+}
+
+// "[#########.........]  3/12  hard 2048 @default  47%" on stderr, rewritten in place.
+void drawProgress(std::size_t index, std::size_t count, const bench::BenchCase& c, double fraction) {
+    constexpr int width = 24;
+    const double total = (static_cast<double>(index) + fraction) / static_cast<double>(count);
+    const int filled = static_cast<int>(total * width);
+    std::string bar(static_cast<std::size_t>(filled), '#');
+    bar.resize(width, '.');
+    const std::string name = (c.label.empty() ? (c.technique.empty() ? "scene's technique" : c.technique) : c.label) +
+                             (c.shadowResolution > 0 && c.label.empty() ? " " + std::to_string(c.shadowResolution) : "") + " @" +
+                             c.scene.stem().string();
+    std::fprintf(stderr, "\r[%s] %zu/%zu %-44.44s %3d%%", bar.c_str(), index + 1, count, name.c_str(), static_cast<int>(total * 100));
+    if (index + 1 == count && fraction >= 1.0) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+}
+
+std::optional<bench::Quality> measureQuality(const BenchJob& job, const std::vector<bench::CaseResult>& results) {
+    if (!job.quality || results.empty()) return std::nullopt;
+    const fs::path scenePath = results.front().spec.scene;
+    scene::Scene scene = scene::io::loadScene(scenePath);
+    if (scene.lights.empty()) return std::nullopt;
+    const int w = job.settings.width, h = job.settings.height;
+    reference::Comparison cmp(scene, w, h, 0.0f);
+    cmp.traceReference(job.samples, isatty(2));
+    bench::Quality q;
+    q.sceneName = results.front().sceneName;
+    q.width = w;
+    q.height = h;
+    q.samples = job.samples;
+    q.referenceSeconds = cmp.referenceSeconds();
+    q.reference = cmp.shade(cmp.referenceVisibility());
+    std::set<std::string> done;
+    for (const auto& r : results) {
+        if (r.spec.scene != scenePath || r.technique == bench::kFloorDepth || r.technique == bench::kFloorLambert ||
+            !done.insert(r.technique).second)
+            continue;
+        const reference::TechniqueScore s = cmp.evaluate(r.technique, r.spec.shadowResolution, 0, r.spec.parameters);
+        q.rows.push_back({r.technique, s.rmse, s.wrongShare, s.colourError, s.noise, cmp.shade(s.visibility), cmp.heatMap(s)});
+    }
+    return q;
+}
+
+void printTable(const std::vector<bench::CaseResult>& results) {
+    std::printf("%-30s %-14s %9s %9s %8s %8s %8s %8s %9s %10s %12s\n", "case", "scene", "frame ms", "p95", "FPS", "GPU ms",
+                "shadow", "opaque", "transl.", "memory MiB", "shadow tris");
+    for (const auto& r : results) {
+        std::printf("%-30.30s %-14.14s %9.2f %9.2f %8.1f %8.2f %8.2f %8.2f %9.2f %10.2f %12.0f\n", bench::caseLabel(r).c_str(),
+                    r.sceneName.c_str(), r.frameMs.mean, r.frameMs.p95, r.fpsMean, r.gpuFrameMs.median, r.passMs[0].median,
+                    r.passMs[1].median, r.passMs[2].median, static_cast<double>(r.shadowMemoryBytes) / 1048576.0,
+                    r.shadowTrianglesPerFrame);
+        if (r.calibrated)
+            for (int p = 0; p < render::kPassCount; ++p) {
+                const auto& cal = r.calibration[static_cast<std::size_t>(p)];
+                std::printf("    calibration %-12s query %8.2f ms  glFinish wall %8.2f ms%s\n", render::toString(static_cast<render::Pass>(p)),
+                            cal.queryMs, cal.wallMs, cal.flagged ? "  <-- differ by over 10 %" : "");
+            }
+    }
+}
+
+}  // namespace
+
+int runBench(const BenchJob& job) {
+    const json mallocSettings = configureMalloc(job.tunedMalloc);
+    std::optional<json> baseline;
+    if (!job.baseline.empty()) {
+        std::ifstream in(job.baseline);
+        if (!in) throw std::runtime_error(job.baseline.string() + ": cannot read the baseline");
+        try {
+            baseline = json::parse(in);
+        } catch (const json::exception& e) {
+            throw std::runtime_error(job.baseline.string() + ": not a bench.json: " + e.what());
+        }
+        if (!baseline->contains("cases")) throw std::runtime_error(job.baseline.string() + ": not a bench.json (no 'cases')");
+    }
+    const std::vector<bench::BenchCase> cases = plan(job);
+    for (const auto& c : cases)
+        if (!fs::exists(c.scene)) throw std::runtime_error(c.scene.string() + ": no such scene or model file");
+
+    auto context = platform::EglContext::create(job.eglPlatform);
+    gl::enableDebugOutput();
+    bench::BenchContext info;
+    info.device = platform::glDeviceDescription();
+    info.glVendor = reinterpret_cast<const char*>(glGetString(GL_VENDOR));
+    info.eglPlatform = context->platformName();
+    info.gitRevision = PENUMBRA_GIT_REVISION;
+    info.malloc = mallocSettings;
+    info.created = nowIso();
+    info.commandLine = job.commandLine;
+
+    std::printf("penumbra bench: %zu case(s) at %dx%d on %s\n", cases.size(), job.settings.width, job.settings.height, info.device.c_str());
+    std::fflush(stdout);
+    const bool terminal = isatty(2);
+    const auto results = bench::runBench(cases, job.settings, terminal ? bench::Progress(drawProgress) : bench::Progress());
+    const auto quality = measureQuality(job, results);
+    const std::string warning = bench::writeBenchReport(job.outDir, results, job.settings, info, baseline, quality);
+    if (!warning.empty()) log::warn("{}", warning);
+    printTable(results);
+    std::printf("wrote %s/bench.json, bench.csv and report.html\n", job.outDir.string().c_str());
+    return 0;
+}
+
+}  // namespace penumbra::app

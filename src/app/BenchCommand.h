@@ -1,0 +1,29 @@
+#pragma once
+// `penumbra bench`: parses nothing itself (main.cpp does); runs the cases in a headless EGL
+// context with a progress bar on a terminal and writes the report (bench/Report.h).
+#include "bench/Bench.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace penumbra::app {
+
+struct BenchJob {
+    std::vector<std::filesystem::path> scenes;  // empty: the built-in scene (unless a suite is given)
+    std::vector<std::string> techniques;        // empty: the scene's own; {"all"}: every registered one
+    std::vector<int> shadowResolutions;         // empty: each light's own
+    std::vector<std::string> suites;
+    bench::BenchSettings settings;
+    std::filesystem::path outDir = "bench-out";
+    std::filesystem::path baseline;
+    bool quality = false;  // score each technique against the ray-traced reference too
+    int samples = 16;      // reference samples per pixel with --quality
+    bool tunedMalloc = true;
+    std::string eglPlatform = "auto";
+    std::vector<std::string> commandLine;
+};
+
+int runBench(const BenchJob& job);
+
+}  // namespace penumbra::app

@@ -1,0 +1,86 @@
+#pragma once
+// `penumbra bench`: frames rendered back to back the way the window draws them (no read-back,
+// no file I/O, at most two frames in flight), GPU time per pass from a ring of timer queries
+// collected a few frames late, wall-clock frame times, shadow-map memory and triangles drawn,
+// per technique x shadow-map resolution x scene. Needs a current GL context.
+#include "bench/Statistics.h"
+#include "render/FrameTimer.h"
+#include "render/Renderer.h"
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace penumbra::bench {
+
+// Pseudo-techniques measured beside the real ones: the floor (bench/FloorRenderer.h).
+inline constexpr const char* kFloorDepth = "floor-depth";
+inline constexpr const char* kFloorLambert = "floor-lambert";
+
+struct BenchCase {
+    std::string suite;                    // "" outside a named suite
+    std::filesystem::path scene;
+    std::string technique;                // a registry name, kFloorDepth or kFloorLambert
+    int shadowResolution = 0;             // 0: each light's own
+    shadows::ParameterValues parameters;  // on top of BenchSettings::render.parameters
+    std::string label;                    // what tables call it; technique[, parameters] when empty
+};
+
+struct BenchSettings {
+    int width = 1280, height = 720;
+    int frames = 0;        // > 0: measure this many frames...
+    double seconds = 2.0;  // ...else frames for this long (at least 3)
+    double warmupSeconds = 1.0;  // at least this long, then until frame times settle (cap 3x)
+    float sceneStep = 1.0f / 60.0f;  // scene seconds per frame: every case sees the same motion
+    bool calibrate = false;  // also check every pass's query against a glFinish wall clock
+    bool images = true;      // one picture per case (read back after timing)
+    render::RenderOptions render;  // transparency, parameters common to every case
+};
+
+struct PassCalibration {
+    double queryMs = 0, wallMs = 0;
+    bool flagged = false;  // differ by over 10 % (and over 0.1 ms, the glFinish round trip)
+};
+
+struct CaseResult {
+    BenchCase spec;
+    std::string technique;  // resolved name (a scene's own when spec.technique is "")
+    std::string sceneName;
+    std::size_t sceneTriangles = 0;
+    std::vector<int> resolutions;  // per shadowed light
+    std::array<Summary, render::kPassCount> passMs;  // GPU query ms per pass
+    Summary gpuFrameMs;                             // sum of the passes
+    Summary frameMs;                                // wall clock between frame starts
+    double fpsMean = 0, fpsMin = 0, fpsMax = 0, fpsP95 = 0;  // fpsP95: 95 % of frames ran at least this fast
+    std::size_t shadowMemoryBytes = 0;
+    double shadowTrianglesPerFrame = 0;
+    int warmupFrames = 0;
+    double warmupSeconds = 0;
+    bool settled = false;  // warm-up ended because frame times settled, not at its cap
+    bool calibrated = false;
+    double finishOverheadMs = 0;  // an empty glFinish round trip, subtracted from the wall times
+    std::array<PassCalibration, render::kPassCount> calibration;
+    shadows::ParameterValues parameters;  // every parameter of the technique as it ran
+    int glErrors = 0;
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> image;  // RGBA8, top row first (empty unless settings.images)
+    // Every measured sample: wall frame ms, and GPU ms per pass.
+    std::vector<double> frameSamples;
+    std::array<std::vector<double>, render::kPassCount> passSamples;
+};
+
+// Called before each case and with the fraction of the current case done.
+using Progress = std::function<void(std::size_t caseIndex, std::size_t caseCount, const BenchCase&, double fraction)>;
+
+// Runs the cases in order, loading each scene once for consecutive cases that share it.
+// Throws InputError (bad scene), std::invalid_argument (unknown technique or parameter).
+std::vector<CaseResult> runBench(const std::vector<BenchCase>& cases, const BenchSettings& settings,
+                                 const Progress& progress = {});
+
+// The camera of frame `time`: the scene's camera_path when it has one, else one turn around the
+// camera's target every 20 s, starting from the scene's own camera.
+scene::Camera benchCamera(const scene::Scene& scene, float time);
+
+}  // namespace penumbra::bench

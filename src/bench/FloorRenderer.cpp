@@ -1,0 +1,79 @@
+#include "bench/FloorRenderer.h"
+
+#include "gl/PassState.h"
+#include "shadows/LightSpace.h"
+
+#include <stdexcept>
+
+namespace penumbra::bench {
+
+FloorRenderer::FloorRenderer(const scene::Scene& scene, Mode mode, int shadowResolution)
+    : scene_(scene), mode_(mode), resolution_(shadowResolution), gpu_(scene) {
+    if (scene.lights.empty()) throw std::invalid_argument("the floor passes need a scene with at least one light");
+    depthProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert", .fragment = "src/bench/glsl/floor_depth.frag"});
+    if (mode == Mode::Lambert)
+        lambertProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert", .fragment = "src/bench/glsl/floor_lambert.frag"});
+    depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution_, resolution_);
+    depthFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    depthFbo_.setNoColor();
+    depthFbo_.checkComplete("floor depth map");
+}
+
+void FloorRenderer::render(float time, const scene::Camera& camera, int width, int height) {
+    if (width != width_ || height != height_) {
+        colour_ = gl::Texture::create2D(GL_RGBA8, width, height);
+        cameraDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
+        cameraFbo_ = gl::Framebuffer();
+        cameraFbo_.attach(GL_COLOR_ATTACHMENT0, colour_);
+        cameraFbo_.attach(GL_DEPTH_ATTACHMENT, cameraDepth_);
+        cameraFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        cameraFbo_.checkComplete("floor camera target");
+        width_ = width;
+        height_ = height;
+    }
+    const GLuint target = cameraFbo_.id();
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const scene::Light& light = scene_.lights.front();
+    const shadows::LightSpace space = shadows::computeLightSpace(light, resolution_, scene_.boundsAt(time), camera, aspect);
+    const std::vector<render::Draw> draws = gpu_.draws(time, camera.position);
+
+    timer_.beginFrame(frame_++);
+    timer_.begin(render::Pass::Shadow);
+    {
+        gl::ScopedPassState state(gl::PassState::depthOnly());
+        depthFbo_.beginDepthPass(resolution_, resolution_);
+        depthProgram_.set("uViewProj", space.viewProj[0]);
+        triangles_ = 0;
+        for (const render::Draw& d : draws)
+            if (d.castsShadow) {
+                gpu_.draw(d, depthProgram_);
+                triangles_ += d.triangles;
+            }
+    }
+    timer_.end(render::Pass::Shadow);
+
+    timer_.begin(render::Pass::Opaque);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    const float clear[4] = {0.05f, 0.06f, 0.08f, 1.0f}, farDepth = 1.0f;
+    glClearNamedFramebufferfv(target, GL_COLOR, 0, clear);
+    if (mode_ == Mode::Lambert) {
+        gl::ScopedPassState state(gl::PassState::depthOnly());
+        glClearNamedFramebufferfv(target, GL_DEPTH, 0, &farDepth);
+        depth_.bind(0);
+        compare_.bind(0);
+        lambertProgram_.set("uShadowMap", 0);
+        lambertProgram_.set("uViewProj", camera.projection(aspect) * camera.view());
+        lambertProgram_.set("uShadowMatrix", shadows::kClipToTexture * space.viewProj[0]);
+        const glm::vec3 toLight = light.type == scene::Light::Type::Directional ? -light.direction : glm::normalize(light.position);
+        lambertProgram_.set("uToLight", glm::normalize(toLight));
+        lambertProgram_.set("uBias", 0.002f);
+        for (const render::Draw& d : draws)
+            if (d.visible && !d.translucent) gpu_.draw(d, lambertProgram_);
+        gl::Sampler::unbind(0);
+    }
+    timer_.end(render::Pass::Opaque);
+    timer_.endFrame();
+}
+
+}  // namespace penumbra::bench

@@ -1,0 +1,56 @@
+#pragma once
+// What `penumbra bench` leaves in its output folder:
+// - bench.json: every setting, the machine, every sample and its summaries;
+// - bench.csv: one row per case;
+// - report.html: one self-contained page (works offline) with the tables, Chart.js plots
+//   (Debian's libjs-chart.js, copied into the page) and a labelled image grid;
+// - images/<case>.png.
+#include "bench/Bench.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace penumbra::bench {
+
+// Where and how the numbers were taken.
+struct BenchContext {
+    std::string device;       // GL renderer | version
+    std::string glVendor;
+    std::string eglPlatform;
+    std::string gitRevision;
+    nlohmann::json malloc;    // the allocator settings in force (see PLATFORM.md "Timing on llvmpipe")
+    std::string created;      // ISO 8601, UTC
+    std::vector<std::string> commandLine;
+};
+
+// A technique's score against the ray-traced reference (`--quality`).
+struct QualityRow {
+    std::string technique;
+    double rmse = 0, wrongShare = 0, colourError = 0, noise = 0;
+    std::vector<std::uint8_t> image, heatMap;  // RGBA8, top row first
+};
+struct Quality {
+    std::string sceneName;
+    int width = 0, height = 0, samples = 0;
+    double referenceSeconds = 0;
+    std::vector<std::uint8_t> reference;
+    std::vector<QualityRow> rows;
+};
+
+nlohmann::json benchJson(const std::vector<CaseResult>& results, const BenchSettings& settings, const BenchContext& context,
+                         const nlohmann::json* baseline);
+
+// Writes bench.json, bench.csv, report.html and images/ into `dir`. `baseline` (an earlier
+// bench.json) adds ratios against it, matched by suite, scene, label and resolution.
+// Returns a warning ("" if none), e.g. when the chart library is not installed.
+std::string writeBenchReport(const std::filesystem::path& dir, const std::vector<CaseResult>& results,
+                             const BenchSettings& settings, const BenchContext& context,
+                             const std::optional<nlohmann::json>& baseline, const std::optional<Quality>& quality);
+
+// The case's name in tables: its label, else technique (and resolution when set).
+std::string caseLabel(const CaseResult& r);
+
+}  // namespace penumbra::bench
