@@ -51,9 +51,11 @@ std::vector<bench::BenchCase> plan(const BenchJob& job) {
     std::vector<bench::BenchCase> cases;
     for (const std::string& suite : job.suites)
         for (bench::BenchCase c : bench::suiteCases(suite, job.outDir / "scenes")) cases.push_back(std::move(c));
-    if (!job.suites.empty() && job.scenes.empty() && job.techniques.empty()) return cases;
+    if (!job.suites.empty() && job.scenes.empty() && job.gridScenes.empty() && job.techniques.empty()) return cases;
 
     std::vector<fs::path> scenes = job.scenes;
+    for (std::size_t triangles : job.gridScenes)
+        scenes.push_back(bench::writeGridScene(job.outDir / "scenes", "grid_" + std::to_string(triangles), triangles, false));
     if (scenes.empty()) scenes.push_back(scene::io::defaultScenePath());
     std::vector<std::string> techniques = job.techniques;
     if (techniques.size() == 1 && techniques.front() == "all") {

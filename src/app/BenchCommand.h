@@ -14,6 +14,7 @@ struct BenchJob {
     std::vector<std::string> techniques;        // empty: the scene's own; {"all"}: every registered one
     std::vector<int> shadowResolutions;         // empty: each light's own
     std::vector<std::string> suites;
+    std::vector<std::size_t> gridScenes;  // generated grid scenes of about these many triangles
     bench::BenchSettings settings;
     std::filesystem::path outDir = "bench-out";
     std::filesystem::path baseline;

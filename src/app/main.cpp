@@ -122,6 +122,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 600.0));
     benchCmd->add_option("--out", bench.outDir, "output folder (default ./bench-out)");
     benchCmd->add_option("--baseline", bench.baseline, "an earlier bench.json: adds ratios against it")->check(CLI::ExistingFile);
+    benchCmd->add_option("--grid-scene", bench.gridScenes,
+                         "also a generated scene (ground, 10x10 spheres and tori) of about N triangles, written to OUT/scenes (repeatable)")
+        ->check(CLI::Range(std::size_t(1000), std::size_t(50000000)));
+    benchCmd->add_flag("--fixed-camera", bench.settings.fixedCamera, "keep the scene's camera (no camera_path, no orbit): for peer comparisons");
     benchCmd->add_flag("--calibrate", bench.settings.calibrate, "check every pass's timer query against a glFinish wall clock");
     benchCmd->add_flag("--quality", bench.quality, "add compare's metrics and heat maps (ray-traced reference of the first scene)");
     benchCmd->add_option("--samples", bench.samples, "reference samples per pixel for --quality (default 16)")->check(CLI::Range(1, 4096));

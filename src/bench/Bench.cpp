@@ -151,7 +151,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
         const double interval = frameNumber > 0 ? std::chrono::duration<double, std::milli>(start - lastStart).count() : 0.0;
         lastStart = start;
         const float t = static_cast<float>(frameNumber) * settings.sceneStep;
-        engine->frame(t, benchCamera(scene, t), w, h);
+        engine->frame(t, settings.fixedCamera ? scene.camera : benchCamera(scene, t), w, h);
         pacer.submitted();
         ++frameNumber;
         return interval;
@@ -251,7 +251,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
     }
 
     if (settings.images) {
-        engine->frame(0.0f, benchCamera(scene, 0.0f), w, h);
+        engine->frame(0.0f, settings.fixedCamera ? scene.camera : benchCamera(scene, 0.0f), w, h);
         r.image = render::readFramebufferRgba8(engine->framebuffer(), w, h);
     }
     r.glErrors = gl::debugErrorCount();

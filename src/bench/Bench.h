@@ -36,6 +36,7 @@ struct BenchSettings {
     float sceneStep = 1.0f / 60.0f;  // scene seconds per frame: every case sees the same motion
     bool calibrate = false;  // also check every pass's query against a glFinish wall clock
     bool images = true;      // one picture per case (read back after timing)
+    bool fixedCamera = false;  // the scene's camera throughout (peer comparisons), no path or orbit
     render::RenderOptions render;  // transparency, parameters common to every case
 };
 

@@ -113,7 +113,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
         {"settings",
          {{"width", settings.width}, {"height", settings.height}, {"frames", settings.frames}, {"seconds", settings.seconds},
           {"warmup_seconds", settings.warmupSeconds}, {"scene_step_seconds", settings.sceneStep},
-          {"calibrate", settings.calibrate}, {"transparency", render::toString(settings.render.transparency)},
+          {"calibrate", settings.calibrate}, {"fixed_camera", settings.fixedCamera}, {"transparency", render::toString(settings.render.transparency)},
           {"parameters", parameters}}},
         {"baseline", baseline ? json(baseline->value("created", "")) : json(nullptr)},
         {"cases", cases},
