@@ -152,9 +152,11 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
         cases.push_back(make(suite, scene, "pcf-poisson16", 1024, {}, "PCF soft (poisson16) 1024"));
         cases.push_back(make(suite, scene, "cascaded", 1024, {}, "PSSM / cascaded 1024"));
         cases.push_back(make(suite, scene, "lispsm", 1024, {}, "LiSPSM 1024"));
-        for (int tiles : {1, 2, 3})
-            cases.push_back(make(suite, scene, "lispsm-tiled", 1024, {{"cols", std::to_string(tiles)}, {"rows", std::to_string(tiles)}},
-                                 "LiSPSM " + std::to_string(tiles) + "x" + std::to_string(tiles) + " 1024"));
+        // Table 4.4 / 4.8: the screen in 1x1, 2x2 and 3x3 tiles, each with its own LiSPSM.
+        for (int res : {256, 512, 1024, 2048})
+            for (int tiles : {1, 2, 3})
+                cases.push_back(make(suite, scene, "lispsm-tiled", res, {{"cols", std::to_string(tiles)}, {"rows", std::to_string(tiles)}},
+                                     "LiSPSM " + std::to_string(tiles) + "x" + std::to_string(tiles) + " " + std::to_string(res)));
     } else if (suite == "all-techniques") {
         for (const fs::path& scene : {defaultScene(), millionScene(sceneDir)})
             for (const auto& t : shadows::techniqueRegistry()) cases.push_back(make(suite, scene, t.name, 0));
