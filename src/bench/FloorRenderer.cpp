@@ -23,11 +23,7 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
     if (width != width_ || height != height_) {
         colour_ = gl::Texture::create2D(GL_RGBA8, width, height);
         cameraDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width, height);
-        cameraFbo_ = gl::Framebuffer();
-        cameraFbo_.attach(GL_COLOR_ATTACHMENT0, colour_);
-        cameraFbo_.attach(GL_DEPTH_ATTACHMENT, cameraDepth_);
-        cameraFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        cameraFbo_.checkComplete("floor camera target");
+        cameraFbo_ = gl::Framebuffer::colourAndDepth(colour_, cameraDepth_, "floor camera target");
         width_ = width;
         height_ = height;
     }

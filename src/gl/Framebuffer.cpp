@@ -36,6 +36,15 @@ void Framebuffer::checkComplete(const std::string& what) const {
                                  std::to_string(status) + ")");
 }
 
+Framebuffer Framebuffer::colourAndDepth(const Texture& colour, const Texture& depth, const std::string& what) {
+    Framebuffer f;
+    f.attach(GL_COLOR_ATTACHMENT0, colour);
+    f.attach(GL_DEPTH_ATTACHMENT, depth);
+    f.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    f.checkComplete(what);
+    return f;
+}
+
 void Framebuffer::beginDepthPass(int width, int height) const {
     bind();
     glViewport(0, 0, width, height);

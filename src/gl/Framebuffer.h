@@ -11,6 +11,8 @@ namespace penumbra::gl {
 class Framebuffer {
 public:
     Framebuffer();
+    // One colour texture (draw buffer 0) and one depth texture, checked complete (`what` names it).
+    static Framebuffer colourAndDepth(const Texture& colour, const Texture& depth, const std::string& what);
     void attach(GLenum attachment, const Texture& texture, int level = 0);
     void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);
     void setDrawBuffers(std::initializer_list<GLenum> buffers);

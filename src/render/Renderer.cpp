@@ -134,11 +134,7 @@ void Renderer::ensureTargets(int w, int h) {
     depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
     hdr_.setFilter(GL_NEAREST, GL_NEAREST);
     depth_.setFilter(GL_NEAREST, GL_NEAREST);
-    hdrFbo_ = gl::Framebuffer();
-    hdrFbo_.attach(GL_COLOR_ATTACHMENT0, hdr_);
-    hdrFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-    hdrFbo_.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-    hdrFbo_.checkComplete("main colour target");
+    hdrFbo_ = gl::Framebuffer::colourAndDepth(hdr_, depth_, "main colour target");
     targetW_ = w;
     targetH_ = h;
 }

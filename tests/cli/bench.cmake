@@ -2,20 +2,10 @@
 # (times > 0, memory equal to the texel bytes of the maps, FPS consistent with frame times),
 # bench.csv has a row per case, and report.html, opened in headless Chromium, has painted charts,
 # decoded images with the case names under them, and no console errors.
-file(REMOVE_RECURSE "${OUT}")
-execute_process(
-  COMMAND "${PENUMBRA}" bench "${DATA}/bench_tiny.json" --techniques hard,none,floor-depth --shadow-res 256,512
-          --size 96x64 --frames 4 --warmup-seconds 0 --calibrate --out "${OUT}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "penumbra bench exited with ${rc}")
-endif()
-foreach(f bench.json bench.csv report.html)
-  if(NOT EXISTS "${OUT}/${f}")
-    message(FATAL_ERROR "missing ${OUT}/${f}")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/helpers.cmake")
+run_penumbra("${OUT}" out "${PENUMBRA}" bench "${DATA}/bench_tiny.json" --techniques hard,none,floor-depth
+             --shadow-res 256,512 --size 96x64 --frames 4 --warmup-seconds 0 --calibrate --out "${OUT}")
+expect_files("${OUT}" bench.json bench.csv report.html)
 
 file(READ "${OUT}/bench.json" doc)
 foreach(key format created git_revision device egl_platform malloc clocks settings cases)

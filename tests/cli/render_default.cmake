@@ -1,20 +1,8 @@
 # The README's first command in its headless form: `penumbra` with no arguments and no display
 # renders the built-in default scene into ./out and prints per-pass timings.
-file(REMOVE_RECURSE "${OUT}")
-file(MAKE_DIRECTORY "${OUT}")
-execute_process(
-  COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY "${PENUMBRA}"
-  WORKING_DIRECTORY "${OUT}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "penumbra exited with ${rc}")
-endif()
-foreach(f frame_0000.png frame_0002.png stats.json)
-  if(NOT EXISTS "${OUT}/out/${f}")
-    message(FATAL_ERROR "missing ${OUT}/out/${f}")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/helpers.cmake")
+run_penumbra("${OUT}" out ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY "${PENUMBRA}")
+expect_files("${OUT}/out" frame_0000.png frame_0002.png stats.json)
 file(READ "${OUT}/out/stats.json" stats)
 string(JSON total GET "${stats}" mean_ms total)
 string(JSON shadow GET "${stats}" mean_ms shadow)

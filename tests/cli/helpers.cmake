@@ -1,0 +1,23 @@
+# Shared by the CLI test scripts.
+
+# Runs penumbra with ARGN in `dir` (created empty), prints its output, fails on a non-zero exit;
+# its stdout lands in `out_var`.
+function(run_penumbra dir out_var)
+  file(REMOVE_RECURSE "${dir}")
+  file(MAKE_DIRECTORY "${dir}")
+  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "penumbra exited with ${rc}")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+
+# Fails naming the first of ARGN (paths relative to `dir`) that does not exist.
+function(expect_files dir)
+  foreach(f IN LISTS ARGN)
+    if(NOT EXISTS "${dir}/${f}")
+      message(FATAL_ERROR "missing ${dir}/${f}")
+    endif()
+  endforeach()
+endfunction()
