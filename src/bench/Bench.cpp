@@ -37,7 +37,7 @@ public:
     virtual std::size_t shadowTriangles() const = 0;
     virtual GLuint framebuffer() const = 0;
     virtual std::string technique() const = 0;
-    virtual shadows::ParameterValues parameters() const = 0;
+    virtual shadows::ParameterValues parameters() = 0;
 };
 
 class RendererEngine final : public Engine {
@@ -56,12 +56,11 @@ public:
     }
     GLuint framebuffer() const override { return target_.framebuffer(); }
     std::string technique() const override { return renderer_.technique().name(); }
-    shadows::ParameterValues parameters() const override {
+    shadows::ParameterValues parameters() override {
         shadows::ParameterValues out;
-        for (const auto& p : const_cast<render::Renderer&>(renderer_).technique().parameters()) out.emplace_back(p.name, p.text());
+        for (const auto& p : renderer_.technique().parameters()) out.emplace_back(p.name, p.text());
         return out;
     }
-    const render::Renderer& renderer() const { return renderer_; }
 
 private:
     render::Renderer renderer_;
@@ -78,7 +77,7 @@ public:
     std::size_t shadowTriangles() const override { return floor_.trianglesPerFrame(); }
     GLuint framebuffer() const override { return floor_.framebuffer(); }
     std::string technique() const override { return name_; }
-    shadows::ParameterValues parameters() const override { return {{"resolution", std::to_string(resolution_)}}; }
+    shadows::ParameterValues parameters() override { return {{"resolution", std::to_string(resolution_)}}; }
 
 private:
     FloorRenderer floor_;
