@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs (skips the install when all are present),
-# then configures and builds into ./build (./build-sanitize with --sanitize). Used by run.sh and test.sh.
+# then configures and builds into ./build (./build-sanitize with --sanitize; nothing with --deps-only).
+# Used by run.sh, test.sh and fuzz.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(cmake ninja-build g++ pkg-config libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev libopengl-dev
   libepoxy-dev libstb-dev libglm-dev libglfw3-dev libimgui-dev libtinyobjloader-dev libtinygltf-dev
   libassimp-dev libcli11-dev nlohmann-json3-dev libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth dpkg-dev file libjs-chart.js chromium openscenegraph)
+  xvfb xauth dpkg-dev file libjs-chart.js chromium openscenegraph clang libclang-rt-14-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -20,6 +21,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+[ "${1:-}" = "--deps-only" ] && exit 0  # scripts/fuzz.sh configures its own clang build
 
 BUILD_TYPE="${PENUMBRA_BUILD_TYPE:-RelWithDebInfo}"
 if [ "${1:-}" = "--sanitize" ]; then

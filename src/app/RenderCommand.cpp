@@ -2,6 +2,7 @@
 
 #include "util/OutputFiles.h"
 #include "gl/Debug.h"
+#include "gl/Object.h"
 #include "platform/EglContext.h"
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
@@ -9,6 +10,8 @@
 #include "util/Log.h"
 
 #include <chrono>
+#include <fstream>
+#include <unistd.h>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -17,6 +20,35 @@ namespace penumbra::app {
 using render::PassTimes;
 
 namespace fs = std::filesystem;
+
+namespace {
+
+long residentKiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (::sysconf(_SC_PAGESIZE) / 1024);
+}
+
+int drainGlErrors() {
+    int n = 0;
+    while (glGetError() != GL_NO_ERROR && n < 1000) ++n;
+    return n;
+}
+
+// The soak's cycle of output sizes and shadow-map resolutions: the job's size, a quarter of it,
+// a 1x1 frame and an odd, narrow one, against maps of 512, 256, 1024 and 2048 texels.
+struct SizeStep {
+    int width, height, shadowResolution;
+};
+std::vector<SizeStep> sizeCycle(const BatchJob& job) {
+    return {{job.width, job.height, 512},
+            {std::max(1, job.width / 2), std::max(1, job.height / 2), 256},
+            {1, 1, 1024},
+            {std::max(1, job.width * 3 / 4 + 1), std::max(1, job.height / 3 + 1), 2048}};
+}
+
+}  // namespace
 
 BatchResult renderBatch(const BatchJob& job) {
     scene::Scene scene = scene::io::loadScene(job.scene);
@@ -28,25 +60,54 @@ BatchResult renderBatch(const BatchJob& job) {
     render::RenderOptions options = job.render;
     options.strictParameters = true;
     render::Renderer renderer(scene, options);
-    render::OffscreenTarget target(job.width, job.height);
+    auto target = std::make_unique<render::OffscreenTarget>(job.width, job.height);
+    int width = job.width, height = job.height;
+    const auto& registry = shadows::techniqueRegistry();
+    const auto sizes = sizeCycle(job);
+    std::size_t techniqueIndex = 0, sizeIndex = 0;
     util::createOutputDirectory(job.outDir);
 
     // One untimed warm-up frame: llvmpipe compiles shaders at first draw, and its first timer
     // query of a context reads garbage.
-    renderer.render(job.startTime, scene.cameraAt(job.startTime), job.width, job.height, target.framebuffer());
+    renderer.render(job.startTime, scene.cameraAt(job.startTime), job.width, job.height, target->framebuffer());
 
     BatchResult result;
+    auto sample = [&](int frame) {
+        glFinish();
+        result.soak.push_back({frame, renderer.technique().name(), width, height, renderer.options().shadowResolution,
+                               residentKiB(), gl::liveObjectCount(), renderer.shadowMemoryBytes(), drainGlErrors()});
+    };
+    const bool soaking = job.cycleTechniquesEvery > 0 || job.cycleSizesEvery > 0;
+    if (soaking) sample(0);
     result.device = platform::glDeviceDescription();
     nlohmann::json frames = nlohmann::json::array();
     for (int i = 0; i < job.frames; ++i) {
+        bool changed = false;
+        if (job.cycleTechniquesEvery > 0 && i > 0 && i % job.cycleTechniquesEvery == 0) {
+            techniqueIndex = (techniqueIndex + 1) % registry.size();
+            renderer.setTechnique(registry[techniqueIndex].name);
+            changed = true;
+        }
+        if (job.cycleSizesEvery > 0 && i > 0 && i % job.cycleSizesEvery == 0) {
+            const SizeStep& s = sizes[++sizeIndex % sizes.size()];
+            width = s.width;
+            height = s.height;
+            renderer.options().shadowResolution = s.shadowResolution;
+            target = std::make_unique<render::OffscreenTarget>(width, height);
+            changed = true;
+        }
+        if (changed) sample(i);
         const float t = job.startTime + static_cast<float>(i) / job.fps;
         const auto cpuStart = std::chrono::steady_clock::now();
-        renderer.render(t, scene.cameraAt(t), job.width, job.height, target.framebuffer());  // along camera_path, if any
-        const std::vector<std::uint8_t> pixels = target.readRgba8();
+        renderer.render(t, scene.cameraAt(t), width, height, target->framebuffer());  // along camera_path, if any
+        const bool png = job.pngEvery > 0 && i % job.pngEvery == 0;
+        const std::vector<std::uint8_t> pixels = png ? target->readRgba8() : std::vector<std::uint8_t>{};
         const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d.png", i);
-        util::writePng(job.outDir / name, job.width, job.height, pixels);
+        if (png) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%04d.png", i);
+            util::writePng(job.outDir / name, width, height, pixels);
+        }
         const PassTimes& p = renderer.waitForTimes();  // the read-back has synchronised anyway
         const auto& triangles = renderer.shadowTriangles();
         if (result.shadowTriangles.size() < triangles.size()) result.shadowTriangles.resize(triangles.size());
@@ -61,6 +122,7 @@ BatchResult renderBatch(const BatchJob& job) {
         result.mean.postMs += p.postMs / job.frames;
     }
     result.frames = job.frames;
+    if (soaking) sample(job.frames);
     result.shadowMemoryBytes = renderer.shadowMemoryBytes();
 
     nlohmann::json lights = nlohmann::json::array();
@@ -95,6 +157,14 @@ BatchResult renderBatch(const BatchJob& job) {
                      {"total", result.mean.totalMs()}}},
         {"frames", frames},
     };
+    if (soaking) {
+        nlohmann::json soak = nlohmann::json::array();
+        for (const SoakSample& s : result.soak)
+            soak.push_back({{"frame", s.frame}, {"technique", s.technique}, {"width", s.width}, {"height", s.height},
+                            {"shadow_resolution", s.shadowResolution}, {"rss_kib", s.rssKiB}, {"gl_objects", s.glObjects},
+                            {"shadow_memory_bytes", s.shadowMemoryBytes}, {"gl_errors", s.glErrors}});
+        stats["soak"] = soak;
+    }
     result.statsFile = job.outDir / "stats.json";
     util::writeJson(result.statsFile, stats);
     return result;

@@ -18,6 +18,22 @@ struct BatchJob {
     float fps = 30.0f;
     std::filesystem::path outDir = "out";
     std::string eglPlatform = "auto";
+    // Soak runs (issue 12): every N frames the next technique of the registry (0: never), every
+    // M frames the next output size and shadow-map resolution (0: never); a PNG every K frames.
+    int cycleTechniquesEvery = 0;
+    int cycleSizesEvery = 0;
+    int pngEvery = 1;
+};
+
+// One row of the soak record, taken at every technique or size change and at the end.
+struct SoakSample {
+    int frame = 0;
+    std::string technique;
+    int width = 0, height = 0, shadowResolution = 0;
+    long rssKiB = 0;
+    long glObjects = 0;
+    std::size_t shadowMemoryBytes = 0;
+    int glErrors = 0;
 };
 
 struct BatchResult {
@@ -27,6 +43,7 @@ struct BatchResult {
     std::size_t shadowMemoryBytes = 0;
     std::vector<double> shadowTriangles;  // per light: mean triangles drawn into its shadow maps per frame
     std::filesystem::path statsFile;
+    std::vector<SoakSample> soak;
 };
 
 // Creates its own EGL context. Throws InputError / ShaderError / std::runtime_error.

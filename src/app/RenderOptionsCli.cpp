@@ -62,8 +62,16 @@ void addSize(CLI::App& command, int& width, int& height, const char* defaultSize
 }
 
 void addEglPlatform(CLI::App& command, std::string& platform) {
-    command.add_option("--egl-platform", platform, "auto | surfaceless | device")
-        ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
+    command.add_option("--egl-platform", platform, "auto | surfaceless | device | device:N (the Nth EGL device)")
+        ->check(CLI::Validator(
+            [](const std::string& s) -> std::string {
+                if (s == "auto" || s == "surfaceless" || s == "device") return {};
+                if (s.rfind("device:", 0) == 0 && s.size() > 7 && s.size() < 12 &&
+                    s.find_first_not_of("0123456789", 7) == std::string::npos)
+                    return {};
+                return "expected auto, surfaceless, device or device:N, got '" + s + "'";
+            },
+            "PLATFORM"));
 }
 
 }  // namespace penumbra::app

@@ -169,6 +169,19 @@ void saveScreenshot(const ViewerOptions& opts, ViewerState& state, int w, int h)
 
 }  // namespace
 
+// One step of the --storm drill: the window is minimised, restored and resized to extremes,
+// and the technique changes, faster than any person would do it.
+static void stormDrill(GLFWwindow* win, render::Renderer& renderer, const std::vector<shadows::TechniqueInfo>& registry, int step) {
+    switch (step % 6) {
+        case 0: glfwIconifyWindow(win); break;
+        case 1: glfwRestoreWindow(win); break;
+        case 2: glfwSetWindowSize(win, 1, 1); break;
+        case 3: glfwSetWindowSize(win, 8192, 8192); break;
+        case 4: glfwSetWindowSize(win, 800, 600); break;
+        default: renderer.setTechnique(registry[static_cast<std::size_t>(step / 6) % registry.size()].name); break;
+    }
+}
+
 int runViewer(const ViewerOptions& opts) {
     scene::Scene scene = scene::io::loadScene(opts.scene);
     platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
@@ -208,8 +221,13 @@ int runViewer(const ViewerOptions& opts) {
     };
 
     ShaderWatcher shaders(paths::dataRoot());
+    int stormStep = 0;
+    const auto& registry = shadows::techniqueRegistry();
     while (!window.shouldClose()) {
         glfwPollEvents();
+        if (opts.resizeStorm) {
+            stormDrill(win, renderer, registry, stormStep++);
+        }
         if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
             state.shaderError = renderer.reloadShaders();
             if (state.shaderError.empty()) log::info("shaders reloaded");

@@ -31,6 +31,21 @@ int runRender(const app::BatchJob& job) {
     for (double t : r.shadowTriangles) std::printf(" %.0f", t);
     std::printf("\n");
     std::printf("wrote %s/frame_0000.png .. and %s\n", job.outDir.string().c_str(), r.statsFile.string().c_str());
+    if (!r.soak.empty()) {
+        long maxRss = 0, maxObjects = 0;
+        int errors = 0;
+        for (const auto& s : r.soak) {
+            maxRss = std::max(maxRss, s.rssKiB);
+            maxObjects = std::max(maxObjects, s.glObjects);
+            errors += s.glErrors;
+        }
+        const auto& first = r.soak.front();
+        const auto& last = r.soak.back();
+        std::printf("soak over %d frames, %zu samples: RSS first %.1f / last %.1f / max %.1f MiB; live GL objects first %ld / "
+                    "last %ld / max %ld; GL errors %d\n",
+                    r.frames, r.soak.size(), first.rssKiB / 1024.0, last.rssKiB / 1024.0, maxRss / 1024.0, first.glObjects,
+                    last.glObjects, maxObjects, errors);
+    }
     return 0;
 }
 
@@ -51,6 +66,7 @@ int main(int argc, char** argv) {
     view->add_option("--controller", viewer.controller, "fly | trackball | orbit")->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
+    view->add_flag("--storm", viewer.resizeStorm, "robustness drill: minimise, restore, 1x1, 8192x8192 and technique switches, every frame");
 
     auto* rend = cli.add_subcommand("render", "render frames headless (EGL) to PNG + stats.json");
     app::BatchJob job;
@@ -60,6 +76,11 @@ int main(int argc, char** argv) {
     rend->add_option("--time", job.startTime, "scene time of the first frame, seconds");
     rend->add_option("--fps", job.fps, "frames per second of scene time")->check(CLI::PositiveNumber);
     rend->add_option("--out", job.outDir, "output directory (default ./out)");
+    rend->add_option("--cycle-techniques", job.cycleTechniquesEvery, "soak: switch to the next technique every N frames")
+        ->check(CLI::NonNegativeNumber);
+    rend->add_option("--cycle-sizes", job.cycleSizesEvery, "soak: change output size and shadow-map resolution every N frames")
+        ->check(CLI::NonNegativeNumber);
+    rend->add_option("--png-every", job.pngEvery, "write every Nth frame as PNG (default 1; 0: none)")->check(CLI::NonNegativeNumber);
     app::addEglPlatform(*rend, job.eglPlatform);
 
     app::ReportJob report;

@@ -2,9 +2,15 @@
 // Move-only ownership of one GL object name. Every GL wrapper in this folder is built on it,
 // so a GL name is deleted exactly once, when its owner goes away.
 #include <epoxy/gl.h>
+
+#include <atomic>
 #include <utility>
 
 namespace penumbra::gl {
+
+// GL names alive in this process, all kinds together: the soak test watches it stay flat.
+inline std::atomic<long> liveObjects{0};
+inline long liveObjectCount() { return liveObjects.load(); }
 
 using DeleteFn = void (*)(GLuint);
 
@@ -12,7 +18,9 @@ template <DeleteFn Delete>
 class Object {
 public:
     Object() = default;
-    explicit Object(GLuint id) : id_(id) {}
+    explicit Object(GLuint id) : id_(id) {
+        if (id_ != 0) ++liveObjects;
+    }
     ~Object() { reset(); }
     Object(Object&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
     Object& operator=(Object&& other) noexcept {
@@ -28,7 +36,10 @@ public:
     GLuint id() const { return id_; }
     explicit operator bool() const { return id_ != 0; }
     void reset() {
-        if (id_ != 0) Delete(id_);
+        if (id_ != 0) {
+            Delete(id_);
+            --liveObjects;
+        }
         id_ = 0;
     }
 

@@ -18,13 +18,24 @@ static EGLDisplay openSurfaceless() {
     return eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
 }
 
-// First device whose display initialises (NVIDIA exposes its GPUs this way).
-static EGLDisplay openDevice() {
+// First device whose display initialises (NVIDIA exposes its GPUs this way), or device `index`
+// when one is asked for ("device:N"); an index past the devices is an error that lists them.
+static EGLDisplay openDevice(int index = -1) {
     if (!hasClientExtension("EGL_EXT_platform_device")) return EGL_NO_DISPLAY;
     EGLint count = 0;
     if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return EGL_NO_DISPLAY;
     std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
     eglQueryDevicesEXT(count, devices.data(), &count);
+    if (index >= 0) {
+        if (index >= count)
+            throw std::runtime_error("EGL: there is no device " + std::to_string(index) + "; this machine has " +
+                                     std::to_string(count) + " EGL device(s), 0.." + std::to_string(count - 1));
+        EGLDisplay dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<std::size_t>(index)], nullptr);
+        EGLint major = 0, minor = 0;
+        if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, &major, &minor))
+            throw std::runtime_error("EGL: device " + std::to_string(index) + " cannot be initialised (eglInitialize failed)");
+        return dpy;
+    }
     for (EGLDeviceEXT dev : devices) {
         EGLDisplay dpy = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, dev, nullptr);
         EGLint major = 0, minor = 0;
@@ -46,6 +57,10 @@ std::unique_ptr<EglContext> EglContext::create(const std::string& platform, bool
     if (dpy == EGL_NO_DISPLAY && (chosen == "auto" || chosen == "device")) {
         dpy = openDevice();
         used = "device";
+    }
+    if (chosen.rfind("device:", 0) == 0) {
+        dpy = openDevice(std::atoi(chosen.c_str() + 7));
+        used = chosen;
     }
     if (dpy == EGL_NO_DISPLAY)
         throw std::runtime_error("EGL: no usable display (platform '" + chosen +

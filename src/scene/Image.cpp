@@ -4,6 +4,9 @@
 
 #include <stb_image.h>
 
+#include <filesystem>
+#include <limits>
+
 namespace penumbra::scene {
 
 bool Image::hasTranslucentAlpha() const {
@@ -41,22 +44,60 @@ static Image fromStb(stbi_uc* pixels, int w, int h, const std::string& label) {
     return img;
 }
 
+// The largest picture decoded: 8192 x 8192 RGBA is 256 MiB. Larger ones (a 16k x 16k photo is
+// 1 GiB decoded) become the checker with a warning giving the size, instead of exhausting memory.
+constexpr long long kMaxImagePixels = 8192LL * 8192LL;
+
+static std::string tooLarge(int w, int h) {
+    if (w <= 0 || h <= 0) return {};
+    if (static_cast<long long>(w) * h <= kMaxImagePixels && w <= 16384 && h <= 16384) return {};
+    return "it is " + std::to_string(w) + "x" + std::to_string(h) +
+           "; pictures are limited to 8192x8192 pixels (16384 on a side)";
+}
+
+static Image missing(const std::filesystem::path& file) {
+    Image checker = checkerImage();
+    checker.source = file.string() + " (missing: checker)";
+    return checker;
+}
+
 Image loadImageOrChecker(const std::filesystem::path& file, const std::string& referencedFrom) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) {
+        log::warn("{}: texture '{}' {}; using a checker", referencedFrom, file.string(),
+                  std::filesystem::exists(file, ec) ? "is not a regular file" : "does not exist");
+        return missing(file);
+    }
     int w = 0, h = 0, n = 0;
+    if (stbi_info(file.string().c_str(), &w, &h, &n)) {
+        if (const std::string why = tooLarge(w, h); !why.empty()) {
+            log::warn("{}: texture '{}' is too large ({}); using a checker", referencedFrom, file.string(), why);
+            return missing(file);
+        }
+    }
     stbi_uc* pixels = stbi_load(file.string().c_str(), &w, &h, &n, 4);
     if (!pixels) {
         log::warn("{}: texture '{}' cannot be read ({}); using a checker", referencedFrom, file.string(),
                   stbi_failure_reason() ? stbi_failure_reason() : "unknown reason");
-        Image checker = checkerImage();
-        checker.source = file.string() + " (missing: checker)";
-        return checker;
+        return missing(file);
     }
     return fromStb(pixels, w, h, file.string());
 }
 
 Image imageFromMemory(const std::uint8_t* data, std::size_t bytes, const std::string& label) {
     int w = 0, h = 0, n = 0;
-    stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes), &w, &h, &n, 4);
+    if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+        log::warn("embedded texture '{}' is over 2 GiB; using a checker", label);
+        return checkerImage();
+    }
+    const int size = static_cast<int>(bytes);
+    if (stbi_info_from_memory(data, size, &w, &h, &n)) {
+        if (const std::string why = tooLarge(w, h); !why.empty()) {
+            log::warn("embedded texture '{}' is too large ({}); using a checker", label, why);
+            return checkerImage();
+        }
+    }
+    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &n, 4);
     if (!pixels) {
         log::warn("embedded texture '{}' cannot be decoded; using a checker", label);
         return checkerImage();

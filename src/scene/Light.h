@@ -19,6 +19,10 @@ struct ShadowSettings {
     glm::vec2 polygonOffset{1.5f, 2.0f};
 };
 
+// The renderer's light block holds this many lights (gpu::kMaxLights, checked where the block is
+// filled); scene files with more are refused rather than drawn with some lights missing.
+inline constexpr int kMaxLights = 8;
+
 struct Light {
     enum class Type { Directional, Spot, Point, Projector };
     Type type = Type::Directional;

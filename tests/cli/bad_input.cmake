@@ -26,3 +26,6 @@ expect_failure("pcf9 | poisson16 | poisson20 | random30 | cross13 | box16 | box6
 expect_failure("true | false" "${PENUMBRA}" render --technique cascaded --param stabilize=maybe --out "${tmp}")
 expect_failure("its parameters: radius_texels" "${PENUMBRA}" render --technique pcf-grid --param radius=3 --out "${tmp}")
 expect_failure("expects name=value" "${PENUMBRA}" render --param radius --out "${tmp}")
+# A GL context that cannot be created: one clear message, non-zero exit (issue 12).
+expect_failure("EGL: there is no device 99" "${PENUMBRA}" render --egl-platform device:99 --frames 1 --out "${tmp}")
+expect_failure("expected auto, surfaceless, device or device:N" "${PENUMBRA}" render --egl-platform wayland --out "${tmp}")

@@ -8,10 +8,22 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/version.h>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <fstream>
 #include <map>
-#include <regex>
+#include <sstream>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <chrono>
+#include <cerrno>
+#include <csignal>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace penumbra::scene::io {
 
@@ -43,11 +55,33 @@ public:
         int twoSided = 0;
         if (m.Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) out.doubleSided = twoSided != 0;
         out.diffuseTexture = texture(m);
+        sanitise(out);
         scene_.materials.push_back(out);
         return static_cast<int>(scene_.materials.size()) - 1;
     }
 
 private:
+    // Files carry any number: an OBJ `d 3`, a glTF alpha of -1, a NaN colour. Values outside
+    // what the renderer's equations mean are clamped into range, with a warning naming them.
+    void sanitise(Material& out) const {
+        std::string fixed;
+        auto clampTo = [&](float& v, float lo, float hi, float fallback, const char* what) {
+            const float before = v;
+            v = std::isfinite(v) ? std::clamp(v, lo, hi) : fallback;
+            if (v != before) fixed += std::string(fixed.empty() ? "" : ", ") + what;
+        };
+        clampTo(out.alpha, 0.0f, 1.0f, 1.0f, "opacity");
+        clampTo(out.alphaCutoff, 0.0f, 1.0f, 0.0f, "alpha cutoff");
+        clampTo(out.shininess, 1e-3f, 1e4f, 32.0f, "shininess");
+        for (int i = 0; i < 3; ++i) {
+            clampTo(out.transmission[i], 0.0f, 1.0f, 0.0f, "transmission");
+            clampTo(out.diffuse[i], 0.0f, 1e3f, 0.8f, "diffuse colour");
+            clampTo(out.specular[i], 0.0f, 1e3f, 0.0f, "specular colour");
+        }
+        if (!fixed.empty())
+            log::warn("{}: material '{}': {} out of range, clamped", file_.string(), out.name, fixed);
+    }
+
     // OBJ: `Tf` is the transmission filter of a material whose illumination model refracts
     // (illum 4, 6, 7, 9); elsewhere Tf (often "1 1 1" on opaque walls) carries no meaning.
     // glTF: KHR_materials_transmission scales the tint, which is the volume attenuation colour
@@ -155,21 +189,135 @@ void appendNode(const aiScene& ai, const aiNode& node, const aiMatrix4x4& parent
 }
 
 // Assimp's messages often carry "Line N" or "line N"; surface it as file:N.
+// Hand-parsed: the message may be long and carry numbers of any size.
 int lineFromMessage(const std::string& msg) {
-    static const std::regex re(R"([Ll]ine[: ]+(\d+))");
-    std::smatch m;
-    return std::regex_search(msg, m, re) ? std::stoi(m[1]) : 0;
+    for (std::size_t at = msg.find("ine"); at != std::string::npos; at = msg.find("ine", at + 1)) {
+        if (at == 0 || (msg[at - 1] != 'L' && msg[at - 1] != 'l')) continue;
+        std::size_t i = at + 3;
+        while (i < msg.size() && (msg[i] == ':' || msg[i] == ' ')) ++i;
+        long line = 0;
+        std::size_t n = 0;
+        for (; i < msg.size() && std::isdigit(static_cast<unsigned char>(msg[i])) && n < 9; ++i, ++n) line = line * 10 + (msg[i] - '0');
+        if (n > 0 && i > at + 3) return static_cast<int>(line);
+    }
+    return 0;
+}
+
+constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                                  aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
+int importTimeoutSeconds = 120;
+
+// Assimp (Debian's 5.2) crashes on some malformed OBJ files and loops forever on some PLY
+// headers; tests/fuzz found both. Its reader therefore runs first in a child process: if the
+// child dies or overruns the time limit, the file is refused with a message, and penumbra goes
+// on. Only when the child read the file cleanly does this process read it (Assimp is
+// deterministic), so the importer costs one extra parse and nothing can take the program down.
+void probeInChildProcess(const fs::path& file) {
+    int pipeFds[2];
+    if (::pipe(pipeFds) != 0) return;  // no isolation available: read in-process as before
+    const pid_t child = ::fork();
+    if (child < 0) {
+        ::close(pipeFds[0]);
+        ::close(pipeFds[1]);
+        return;
+    }
+    if (child == 0) {
+        // Default actions for crash signals, so a crash ends only this child quietly (a fuzzer's
+        // or sanitizer's handler would otherwise report the child's crash as the parent's).
+        for (int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT}) ::signal(sig, SIG_DFL);
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the program that asked
+        if (::getppid() == 1) ::_exit(0);
+        ::close(pipeFds[0]);
+        Assimp::Importer importer;
+        importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+        importer.ReadFile(file.string(), kImportFlags);
+        ::_exit(0);  // the pipe's write end closes here, which wakes the parent's poll
+    }
+    ::close(pipeFds[1]);
+    // Wait for the pipe to close (the child exited or died) or the time limit, whichever comes
+    // first; signals (a profiler's or a fuzzer's timer) interrupt poll, which then resumes.
+    using Clock = std::chrono::steady_clock;
+    const auto deadline = Clock::now() + std::chrono::seconds(importTimeoutSeconds);
+    int ready = -1;
+    while (true) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        pollfd pfd{pipeFds[0], POLLIN, 0};
+        ready = left > 0 ? ::poll(&pfd, 1, static_cast<int>(left)) : 0;
+        if (ready >= 0 || errno != EINTR) break;
+    }
+    ::close(pipeFds[0]);
+    if (ready <= 0) ::kill(child, SIGKILL);
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
+    if (ready <= 0)
+        throw InputError(file, "cannot read model: the importer (Assimp " + std::to_string(aiGetVersionMajor()) + "." +
+                                   std::to_string(aiGetVersionMinor()) + ") did not finish within " +
+                                   std::to_string(importTimeoutSeconds) + " s; the file is malformed or too large");
+    if (WIFSIGNALED(status))
+        throw InputError(file, "cannot read model: the importer (Assimp " + std::to_string(aiGetVersionMajor()) + "." +
+                                   std::to_string(aiGetVersionMinor()) + ") crashed on this file (signal " +
+                                   std::to_string(WTERMSIG(status)) + "); the file is malformed");
+}
+
+// Assimp's PLY reader loops forever on a binary file shorter than its header promises (a cut
+// download, say). The header says how many vertices and faces follow; each needs at least its
+// fixed-size properties (and a list's count), so a file shorter than that is refused at once.
+void checkBinaryPlyLength(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::string line;
+    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;
+    const std::map<std::string, int> sizes = {{"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2},
+                                              {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4},
+                                              {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4},
+                                              {"double", 8}, {"float64", 8}};
+    bool binary = false;
+    double needed = 0, count = 0, perElement = 0;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string word, type;
+        words >> word;
+        if (word == "format") {
+            words >> type;
+            binary = type.rfind("binary", 0) == 0;
+        } else if (word == "element") {
+            needed += count * perElement;
+            words >> type >> count;
+            if (!words || count < 0) return;  // Assimp reports malformed headers itself
+            perElement = 0;
+        } else if (word == "property") {
+            words >> type;
+            if (type == "list") words >> type;  // the count's type: at least one count per element
+            if (auto it = sizes.find(type); it != sizes.end()) perElement += it->second;
+        } else if (word == "end_header") {
+            needed += count * perElement;
+            if (!binary) return;
+            std::error_code ec;
+            const auto header = static_cast<double>(in.tellg());
+            const auto size = static_cast<double>(fs::file_size(file, ec));
+            if (!ec && header >= 0 && size - header < needed)
+                throw InputError(file, "truncated binary PLY: the header announces at least " +
+                                           std::to_string(static_cast<long long>(needed)) + " bytes of data, the file holds " +
+                                           std::to_string(static_cast<long long>(size - header)));
+            return;
+        }
+    }
+    throw InputError(file, "truncated PLY: the header has no 'end_header' line");
 }
 
 }  // namespace
 
+void setModelImportTimeout(int seconds) { importTimeoutSeconds = std::max(1, seconds); }
+
 int importModel(const fs::path& file, Scene& scene) {
-    if (!fs::exists(file)) throw InputError(file, "model file not found");
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw InputError(file, "model file not found");
+    // A folder or a device (/dev/zero, a FIFO) would make the importer fail or read forever.
+    if (!fs::is_regular_file(file, ec)) throw InputError(file, "model path is not a regular file");
+    checkBinaryPlyLength(file);
+    probeInChildProcess(file);
     Assimp::Importer importer;
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                           aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
-    const aiScene* ai = importer.ReadFile(file.string(), flags);
+    const aiScene* ai = importer.ReadFile(file.string(), kImportFlags);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
         const std::string msg = importer.GetErrorString();
         throw InputError(file, lineFromMessage(msg), "cannot read model: " + (msg.empty() ? "unknown error" : msg));
@@ -189,6 +337,11 @@ int importModel(const fs::path& file, Scene& scene) {
         if (!std::isfinite(v.position.x) || !std::isfinite(v.position.y) || !std::isfinite(v.position.z))
             throw InputError(file, "model has non-finite vertex positions");
     mesh.computeBounds();
+    // Coordinates near float's limit overflow every product the renderer forms (extent, light
+    // boxes, the framing camera); 1e15 is far beyond any real scene in any unit.
+    const float reach = std::max(glm::length(mesh.bounds.min), glm::length(mesh.bounds.max));
+    if (!std::isfinite(reach) || reach > 1e15f || !std::isfinite(glm::length(mesh.bounds.extent())))
+        throw InputError(file, "model coordinates are out of range (beyond 1e15 from the origin)");
     scene.meshes.push_back(std::move(mesh));
     return static_cast<int>(scene.meshes.size()) - 1;
 }

@@ -9,6 +9,11 @@ namespace penumbra::scene::io {
 
 // Appends the model's mesh, materials and images to `scene`; returns the mesh index.
 // Throws InputError naming the file when the model cannot be read or holds no triangles.
+// Assimp first reads the file in a child process (see ModelImporter.cpp), so a crash or a hang
+// of the third-party reader becomes this InputError instead of taking the program down.
 int importModel(const std::filesystem::path& file, Scene& scene);
+
+// How long the importer may take on one file before it is stopped (default 120 s).
+void setModelImportTimeout(int seconds);
 
 }  // namespace penumbra::scene::io

@@ -27,7 +27,14 @@ public:
     Reader(const std::string& text, fs::path file) : text_(text), file_(std::move(file)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& key, const std::string& what) const {
-        throw InputError(file_, lineOf(key), (path.empty() ? "" : path + ": ") + what);
+        int line = lineOf(key);
+        if (line == 0) line = lineOf(lastKeyOf(path));  // "objects[1].animation" -> "animation"
+        throw InputError(file_, line, (path.empty() ? "" : path + ": ") + what);
+    }
+
+    static std::string lastKeyOf(const std::string& path) {
+        std::string last = path.substr(path.find_last_of('.') == std::string::npos ? 0 : path.find_last_of('.') + 1);
+        return last.substr(0, last.find('['));
     }
 
     void allowKeys(const json& obj, const std::string& path, std::initializer_list<const char*> keys) const {
@@ -47,9 +54,20 @@ public:
         if (!obj.contains(key)) return fallback;
         const json& v = obj.at(key);
         if (!v.is_number()) fail(path, key, std::string("'") + key + "' must be a number, got " + v.type_name());
-        const double d = v.get<double>();
-        if (!std::isfinite(d)) fail(path, key, std::string("'") + key + "' is not finite");
+        return finiteFloat(v.get<double>(), key, path);
+    }
+
+    // JSON numbers beyond float range (1e39, -1e300) would become inf or NaN downstream.
+    float finiteFloat(double d, const char* key, const std::string& path) const {
+        if (!std::isfinite(d) || std::fabs(d) > 1e30) fail(path, key, std::string("'") + key + "' is not a finite number within +-1e30");
         return static_cast<float>(d);
+    }
+
+    // Every element of an array of numbers, each finite (as number()).
+    std::vector<float> numbers(const json& v, const char* key, const std::string& path) const {
+        std::vector<float> out;
+        for (const json& e : v) out.push_back(finiteFloat(e.get<double>(), key, path));
+        return out;
     }
 
     float positive(const json& obj, const char* key, const std::string& path, float fallback) const {
@@ -64,13 +82,11 @@ public:
     }
 
     glm::vec3 vec3Value(const json& v, const char* key, const std::string& path) const {
-        if (v.is_number()) {
-            const float f = v.get<float>();
-            return glm::vec3(f);
-        }
+        if (v.is_number()) return glm::vec3(finiteFloat(v.get<double>(), key, path));
         if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); }))
             fail(path, key, std::string("'") + key + "' must be an array of 3 numbers");
-        return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+        const std::vector<float> f = numbers(v, key, path);
+        return {f[0], f[1], f[2]};
     }
 
     std::string string(const json& obj, const char* key, const std::string& path, const std::string& fallback) const {
@@ -143,6 +159,8 @@ void readCamera(const Reader& r, const json& j, Camera& cam) {
     if (cam.far <= cam.near) r.fail(p, "far", "'far' must be greater than 'near'");
     if (cam.fovDeg >= 179.0f) r.fail(p, "fov_deg", "'fov_deg' must be below 179");
     if (glm::length(cam.position - cam.target) <= 0) r.fail(p, "target", "'target' equals 'position'");
+    if (glm::length(glm::cross(glm::normalize(cam.target - cam.position), cam.up)) < 1e-6f)
+        r.fail(p, "up", "'up' is zero or parallel to the view direction");
     cam.controller = r.choice(j, "controller", p, cam.controller,
                               {{"fly", Camera::Controller::Fly},
                                {"trackball", Camera::Controller::Trackball},
@@ -156,8 +174,9 @@ ShadowSettings readShadow(const Reader& r, const json& j, const std::string& p) 
         if (!j["enabled"].is_boolean()) r.fail(p, "enabled", "'enabled' must be true or false");
         s.enabled = j["enabled"].get<bool>();
     }
-    s.resolution = static_cast<int>(r.number(j, "resolution", p, static_cast<float>(s.resolution)));
-    if (s.resolution < 16 || s.resolution > 16384) r.fail(p, "resolution", "'resolution' must be within 16..16384");
+    const float resolution = r.number(j, "resolution", p, static_cast<float>(s.resolution));
+    if (!(resolution >= 16 && resolution <= 16384)) r.fail(p, "resolution", "'resolution' must be within 16..16384");
+    s.resolution = static_cast<int>(resolution);
     s.bias = r.number(j, "bias", p, s.bias);
     s.slopeBias = r.number(j, "slope_bias", p, s.slopeBias);
     s.normalOffset = r.number(j, "normal_offset", p, s.normalOffset);
@@ -165,7 +184,8 @@ ShadowSettings readShadow(const Reader& r, const json& j, const std::string& p) 
         const json& po = j["polygon_offset"];
         if (!po.is_array() || po.size() != 2 || !po[0].is_number() || !po[1].is_number())
             r.fail(p, "polygon_offset", "'polygon_offset' must be [factor, units]");
-        s.polygonOffset = {po[0].get<float>(), po[1].get<float>()};
+        const std::vector<float> f = r.numbers(po, "polygon_offset", p);
+        s.polygonOffset = {f[0], f[1]};
     }
     return s;
 }
@@ -188,8 +208,10 @@ void readLight(const Reader& r, const json& j, const std::string& p, Scene& scen
     l.angleDeg = r.positive(j, "angle_deg", p, l.angleDeg);
     if (l.angleDeg >= 170.0f) r.fail(p, "angle_deg", "'angle_deg' must be below 170");
     l.size = r.number(j, "size", p, l.size);
+    if (l.size < 0) r.fail(p, "size", "'size' must be >= 0");
     l.near = r.positive(j, "near", p, l.near);
     l.range = r.positive(j, "range", p, l.range);
+    if (l.range <= l.near) r.fail(p, "range", "'range' must be greater than 'near'");
     if (l.type == Light::Type::Directional && !j.contains("direction"))
         r.fail(p, "type", "a directional light needs a 'direction'");
     if ((l.type == Light::Type::Spot || l.type == Light::Type::Projector || l.type == Light::Type::Point) &&
@@ -218,6 +240,7 @@ int readMaterial(const Reader& r, const json& j, const std::string& p, Scene& sc
     if (glm::any(glm::lessThan(m.transmission, glm::vec3(0))) || glm::any(glm::greaterThan(m.transmission, glm::vec3(1))))
         r.fail(p, "transmission", "'transmission' must be within 0..1 per channel");
     m.alphaCutoff = r.number(j, "alpha_cutoff", p, m.alphaCutoff);
+    if (m.alphaCutoff < 0 || m.alphaCutoff > 1) r.fail(p, "alpha_cutoff", "'alpha_cutoff' must be within 0..1");
     if (j.contains("double_sided")) m.doubleSided = j["double_sided"].is_boolean() && j["double_sided"].get<bool>();
     if (j.contains("texture")) {
         scene.images.push_back(loadImageOrChecker(r.resolve(r.string(j, "texture", p, "")), r.file().string()));
@@ -233,7 +256,8 @@ Track readTrack(const Reader& r, const json& keys, const std::string& p, const c
     for (const auto& k : keys) {
         if (!k.is_array() || k.size() != 4 || !std::all_of(k.begin(), k.end(), [](const json& e) { return e.is_number(); }))
             r.fail(p, key, "each keyframe must be [t, x, y, z]");
-        out.push_back({k[0].get<float>(), {k[1].get<float>(), k[2].get<float>(), k[3].get<float>()}});
+        const std::vector<float> f = r.numbers(k, key, p);
+        out.push_back({f[0], {f[1], f[2], f[3]}});
     }
     try {
         return Track(std::move(out));
@@ -261,7 +285,11 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
     const bool hasModel = j.contains("model"), hasShape = j.contains("shape");
     if (hasModel == hasShape) r.fail(p, "", "an object needs exactly one of 'model' or 'shape'");
     if (hasModel) {
-        o.mesh = importModel(r.resolve(r.string(j, "model", p, "")), scene);
+        try {
+            o.mesh = importModel(r.resolve(r.string(j, "model", p, "")), scene);
+        } catch (const InputError& e) {  // name the scene's line too: "scene.json:12: objects[3]: model.obj: ..."
+            r.fail(p, "model", e.what());
+        }
         o.name = r.string(j, "name", p, fs::path(r.string(j, "model", p, "")).stem().string());
     } else {
         const std::string shape = r.string(j, "shape", p, "");
@@ -272,11 +300,15 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
                 const json& s = j["size"];
                 if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
                     r.fail(p, "size", "a plane's 'size' is [x, z]");
-                size = {s[0].get<float>(), s[1].get<float>()};
+                const std::vector<float> f = r.numbers(s, "size", p);
+                if (!(f[0] > 0 && f[1] > 0)) r.fail(p, "size", "a plane's 'size' must be > 0");
+                size = {f[0], f[1]};
             }
             mesh = shapes::plane(size.x, size.y);
         } else if (shape == "box") {
-            mesh = shapes::box(r.vec3(j, "size", p, glm::vec3(1.0f)));
+            const glm::vec3 size = r.vec3(j, "size", p, glm::vec3(1.0f));
+            if (!glm::all(glm::greaterThan(size, glm::vec3(0)))) r.fail(p, "size", "a box's 'size' must be > 0 on every axis");
+            mesh = shapes::box(size);
         } else if (shape == "sphere") {
             mesh = shapes::sphere(r.positive(j, "radius", p, 0.5f));
         } else {
@@ -291,6 +323,8 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
     o.position = r.vec3(j, "position", p, o.position);
     o.rotationDeg = r.vec3(j, "rotation_deg", p, o.rotationDeg);
     o.scale = r.vec3(j, "scale", p, o.scale);
+    if (glm::any(glm::lessThan(glm::abs(o.scale), glm::vec3(1e-6f))))
+        r.fail(p, "scale", "'scale' must not be zero on any axis (the object would have no area and no normals)");
     if (j.contains("material")) o.materialOverride = readMaterial(r, j["material"], p + ".material", scene);
     if (j.contains("animation")) o.animation = readAnimation(r, j["animation"], p + ".animation");
     for (const auto& [key, flag] : {std::pair<const char*, bool*>{"cast_shadows", &o.castsShadow}, {"visible", &o.visible}}) {
@@ -316,6 +350,8 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
     json doc;
     try {
         doc = json::parse(text);
+    } catch (const json::out_of_range& e) {  // a number too large for a double, e.g. 1e400
+        throw InputError(file, "invalid JSON: " + std::string(e.what()));
     } catch (const json::parse_error& e) {
         int line = 0;
         const std::string col = parseErrorLocation(text, e.byte > 0 ? e.byte - 1 : 0, line);
@@ -349,6 +385,9 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
     }
     if (doc.contains("lights")) {
         if (!doc["lights"].is_array()) r.fail("", "lights", "'lights' must be an array");
+        if (doc["lights"].size() > static_cast<std::size_t>(kMaxLights))
+            r.fail("", "lights", std::to_string(doc["lights"].size()) + " lights; penumbra draws at most " +
+                                     std::to_string(kMaxLights));
         for (std::size_t i = 0; i < doc["lights"].size(); ++i)
             readLight(r, doc["lights"][i], "lights[" + std::to_string(i) + "]", scene);
     }

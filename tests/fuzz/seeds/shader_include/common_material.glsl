@@ -1,0 +1,22 @@
+// Material uniforms shared by every pass that draws scene surfaces.
+#include "src/gpu/ShaderContract.h"
+
+layout(binding = kUnitDiffuse) uniform sampler2D uDiffuseTexture;
+uniform int uHasTexture;
+uniform vec3 uDiffuse;
+uniform vec3 uSpecular;
+uniform float uShininess;
+uniform float uAlpha;          // coverage (McGuire & Enderton 2011)
+uniform vec3 uTransmission;    // t_rgb
+uniform float uAlphaCutoff;    // > 0: alpha test
+
+vec4 materialTexel(vec2 uv) { return uHasTexture != 0 ? texture(uDiffuseTexture, uv) : vec4(1.0); }
+
+// Coverage after the texture's alpha; fragments under the alpha-test cutoff are dropped.
+float materialCoverage(vec4 texel) {
+    if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;
+    return uAlphaCutoff > 0.0 ? uAlpha : uAlpha * texel.a;
+}
+
+// Fraction of light a surface stops, rho = (1 - t) * alpha (McGuire & Enderton 2011).
+vec3 materialStopped(float coverage) { return (vec3(1.0) - uTransmission) * coverage; }

@@ -1,0 +1,192 @@
+#version 450 core
+// Forward Blinn-Phong in linear space (Blinn 1977; Mátl 2013 §5.2):
+//   ambient*diffuse + sum_lights (diffuse*max(N.L,0) + specular) * colour*intensity * visibility
+// where visibility (rgb, coloured) comes from the active shadow technique's lookup.
+#include "../common/material.glsl"
+#include "../common/lights.glsl"
+#include "shadow_lookup.glsl"
+
+in VertexOut {
+    vec3 worldPos;
+    vec3 normal;
+    vec2 uv;
+} vIn;
+
+layout(binding = kUnitProjector) uniform sampler2D uProjectorImage[kMaxProjectors];
+uniform vec3 uCameraPos;
+uniform vec3 uAmbient;
+uniform int uTranslucentPass;  // 1: dual-source output of transmittance for blending
+uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal,
+                               // 4 unshadowed light from uDebugLight, 5 ambient term
+uniform int uDebugLight;
+
+// Translucent output, chosen by the renderer's transparency mode (Mátl 2013 ch. 3):
+//   default: dual-source blending dst * transmit + src (painter's order)
+//   TRANSLUCENT_WEIGHTED: weighted blended OIT (McGuire & Bavoil 2013), two targets
+//   TRANSLUCENT_PEEL: depth peeling (Everitt 2001), one layer per pass, two targets
+//   TRANSLUCENT_STOCHASTIC_DEPTH / _ACCUM: stochastic transparency (Enderton et al. 2010)
+//   TRANSLUCENT_DUAL_PEEL: dual depth peeling (Bavoil & Myers 2008): per pass the nearest and the
+//     farthest remaining layer; (-z, z) MAX-blended finds them for the next pass
+#if defined(TRANSLUCENT_DUAL_PEEL)
+vec4 outColor, outTransmit;  // routed to the front or back layer at the end of main
+layout(location = 0) out vec4 outDualDepth;
+layout(location = 1) out vec4 outFrontColour;
+layout(location = 2) out vec4 outFrontTransmit;
+layout(location = 3) out vec4 outBackColour;
+layout(location = 4) out vec4 outBackTransmit;
+layout(binding = kUnitDualDepth) uniform sampler2D uDualDepth;  // previous pass: (-nearest, farthest)
+#elif defined(TRANSLUCENT_WEIGHTED) || defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_STOCHASTIC_DEPTH)
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out vec4 outTransmit;
+#else
+layout(location = 0, index = 0) out vec4 outColor;
+layout(location = 0, index = 1) out vec4 outTransmit;
+#endif
+#ifdef TRANSLUCENT_PEEL
+layout(binding = kUnitPeelDepth) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
+#endif
+#if defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_DUAL_PEEL)
+layout(binding = kUnitOpaqueDepth) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
+#endif
+#if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
+#include "../common/random.glsl"
+#define STOCHASTIC_SAMPLES 4
+layout(binding = kUnitStochasticDepth) uniform sampler2DMS uStochasticDepth;  // nearest stochastic surface per sample
+#endif
+
+// Constant indices only: llvmpipe (LLVM 15) crashes on dynamically indexed sampler arrays
+// once a cube sampler is in the same shader (see shaders/common/shadow_samplers.glsl).
+vec3 projectorTexel(int slot, vec2 uv) {
+    return slot == 0 ? texture(uProjectorImage[0], uv).rgb : texture(uProjectorImage[1], uv).rgb;
+}
+
+// Light arriving at P from light i before shadowing: radiance shaped by spot cone or projector
+// picture (Nápravník 2020, "Projekce": the picture rides on the light, the shadow map cuts it).
+vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
+    LightData light = uLights[i];
+    int type = lightType(i);
+    if (type == kLightDirectional) {
+        L = -light.directionFar.xyz;
+        return light.colorType.rgb;
+    }
+    vec3 toLight = light.positionNear.xyz - P;
+    L = normalize(toLight);
+    if (type == kLightPoint) return light.colorType.rgb;
+    if (type == kLightSpot) {
+        float cosAngle = dot(-L, light.directionFar.xyz);
+        return light.colorType.rgb * smoothstep(light.cone.x, light.cone.y, cosAngle);
+    }
+    // Projector: look the picture up where the projector's frustum maps P.
+    vec4 s = light.shadowMatrix * vec4(P, 1.0);
+    vec2 uv = s.xy / s.w;
+    int slot = int(light.cone.z);
+    if (s.w <= 0.0 || slot < 0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
+    // Images are stored top row first: flip v so the picture lands upright.
+    return light.colorType.rgb * projectorTexel(slot, vec2(uv.x, 1.0 - uv.y));
+}
+
+void main() {
+#ifdef TRANSLUCENT_PEEL
+    // Keep only the nearest surface behind the previous layer (strictly), in front of the opaque.
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    if (gl_FragCoord.z <= texelFetch(uPeelDepth, p, 0).r || gl_FragCoord.z >= texelFetch(uOpaqueDepth, p, 0).r) discard;
+#endif
+#if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
+    if (gl_FragCoord.z >= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
+#endif
+#ifdef TRANSLUCENT_DUAL_PEEL
+    float z = gl_FragCoord.z;
+    vec2 previous = texelFetch(uDualDepth, ivec2(gl_FragCoord.xy), 0).rg;
+    float nearest = -previous.x, farthest = previous.y;
+    if (z >= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r || z < nearest || z > farthest) discard;  // peeled
+    outFrontColour = vec4(0.0);
+    outBackColour = vec4(0.0);
+    outFrontTransmit = vec4(1.0);
+    outBackTransmit = vec4(1.0);
+    if (z > nearest && z < farthest) {  // still inside: bound the next pass's layers
+        outDualDepth = vec4(-z, z, 0.0, 0.0);
+        return;
+    }
+    outDualDepth = vec4(-1.0);  // neutral under MAX blending
+#endif
+    vec4 texel = materialTexel(vIn.uv);
+    float coverage = materialCoverage(texel);
+    vec3 albedo = uDiffuse * texel.rgb;
+    vec3 P = vIn.worldPos;
+    vec3 N = normalize(vIn.normal);
+    if (!gl_FrontFacing) N = -N;  // two-sided surfaces (planes, panes) light on both faces
+    vec3 V = normalize(uCameraPos - P);
+
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), debugVisibility = vec3(1.0), debugContribution = vec3(0.0);
+    for (int i = 0; i < uLightCount.x; ++i) {
+        vec3 L;
+        vec3 radiance = incidentRadiance(i, P, L);
+        float NdotL = dot(N, L);
+        vec3 visibility = shadowVisibility(i, P, N, NdotL);
+        if (i == uDebugLight) debugVisibility = visibility;
+        if (NdotL <= 0.0) continue;
+        vec3 H = normalize(L + V);
+        vec3 unshadowed = (albedo * NdotL + uSpecular * pow(max(dot(N, H), 0.0), uShininess)) * radiance;
+        if (i == uDebugLight) debugContribution = unshadowed;
+        vec3 received = radiance * visibility;
+        diffuse += albedo * NdotL * received;
+        specular += uSpecular * pow(max(dot(N, H), 0.0), uShininess) * received;
+    }
+
+    if (uOutputMode == 1) { outColor = vec4(debugVisibility, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 2) { outColor = vec4(P, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 3) { outColor = vec4(N, 1.0); outTransmit = vec4(0.0); return; }
+    if (uOutputMode == 4) { outColor = vec4(debugContribution, 1.0); outTransmit = vec4(0.0); return; }
+
+    vec3 ambient = uAmbient * albedo;
+    if (uOutputMode == 5) { outColor = vec4(ambient, 1.0); outTransmit = vec4(0.0); return; }
+    if (uTranslucentPass == 0) {
+        outColor = vec4(ambient + diffuse + specular, 1.0);
+        outTransmit = vec4(0.0);
+        return;
+    }
+    // Translucent surface over what is behind it (dual-source blending: dst*transmit + src):
+    // the covered, non-transmitting share reflects; light passes with 1 - rho per channel.
+    vec3 stopped = materialStopped(coverage);
+    outColor = vec4((ambient + diffuse) * stopped + specular * coverage, 1.0);
+    outTransmit = vec4(vec3(1.0) - stopped, 1.0);
+#ifdef TRANSLUCENT_STOCHASTIC_DEPTH
+    // Pass 1: each sample of the pixel is covered with probability = opacity (the mean of ρ),
+    // so the multisampled depth holds, per sample, the nearest surface that happened to cover it.
+    float opacity = dot(stopped, vec3(1.0 / 3.0));
+    int mask = 0;
+    for (int i = 0; i < STOCHASTIC_SAMPLES; ++i)
+        if (fragmentRandom(uint(i)) < opacity) mask |= 1 << i;
+    if (mask == 0) discard;
+    gl_SampleMask[0] = mask;
+#endif
+#ifdef TRANSLUCENT_STOCHASTIC_ACCUM
+    // Pass 2: this surface's visibility = share of samples whose nearest stochastic surface is
+    // not in front of it; colour and opacity are summed weighted by it. The resolve applies the
+    // paper's alpha correction: sum(C a vis) / sum(a vis) * (1 - prod(1 - a)), the last factor
+    // exact (and coloured) from the multiplied transmittance.
+    float a = max(dot(stopped, vec3(1.0 / 3.0)), 1e-3);
+    float visible = 0.0;
+    for (int i = 0; i < STOCHASTIC_SAMPLES; ++i)
+        visible += texelFetch(uStochasticDepth, ivec2(gl_FragCoord.xy), i).r >= gl_FragCoord.z - 1e-6 ? 1.0 : 0.0;
+    visible /= float(STOCHASTIC_SAMPLES);
+    outColor = vec4(outColor.rgb * visible, a * visible);
+#endif
+#ifdef TRANSLUCENT_DUAL_PEEL
+    // MAX blending keeps this layer's colour over the zeros of the others, MIN its transmittance.
+    if (z == nearest) {
+        outFrontColour = outColor;
+        outFrontTransmit = outTransmit;
+    } else {
+        outBackColour = outColor;
+        outBackTransmit = outTransmit;
+    }
+#endif
+#ifdef TRANSLUCENT_WEIGHTED
+    // Eq. 7 of McGuire & Bavoil: depth-weighted sums of premultiplied colour and of coverage;
+    // the transmittance itself is multiplied exactly (per channel) by blending into outTransmit.
+    float a = max(dot(stopped, vec3(1.0 / 3.0)), 1e-3);
+    float w = clamp(a * max(1e-2, 3e3 * pow(1.0 - gl_FragCoord.z, 3.0)), 1e-2, 3e3);
+    outColor = vec4(outColor.rgb * w, a * w);
+#endif
+}

@@ -1,0 +1,24 @@
+#version 450 core
+// End of frame: distance fog towards the background before the far plane (Nápravník 2020, "Mlha"),
+// clamp (no tone mapping) and sRGB encoding.
+#include "../common/color.glsl"
+in vec2 vUv;
+layout(binding = 0) uniform sampler2D uHdr;
+layout(binding = 1) uniform sampler2D uDepth;
+uniform mat4 uInvProj;
+uniform vec3 uBackground;
+uniform vec2 uFog;        // start, end distances from the camera
+uniform int uFogEnabled;
+uniform int uEncodeSrgb;  // 0: pass linear values through (debug channels)
+layout(location = 0) out vec4 outColor;
+
+void main() {
+    vec3 color = texture(uHdr, vUv).rgb;
+    float depth = texture(uDepth, vUv).r;
+    if (uFogEnabled != 0 && depth < 1.0) {
+        vec4 view = uInvProj * vec4(vUv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+        float distance = length(view.xyz / view.w);
+        color = mix(color, uBackground, smoothstep(uFog.x, uFog.y, distance));
+    }
+    outColor = vec4(uEncodeSrgb != 0 ? linearToSrgb(color) : color, 1.0);
+}
