@@ -14,7 +14,7 @@ static_assert(static_cast<int>(Light::Type::Directional) == gpu::kLightDirection
 
 gpu::LightBlock packLights(const std::vector<Light>& lights, const std::vector<shadows::LightSpace>& spaces,
                            const shadows::ShadowSlots& slots) {
-    static_assert(gpu::kMaxLights == scene::kMaxLights, "the scene limit is the GPU light block's size");
+    static_assert(scene::kLightLimit == gpu::kMaxLights, "the scene limit is the GPU light block's size");
     gpu::LightBlock block{};
     int projectorSlot = 0;
     const int n = static_cast<int>(std::min<std::size_t>(lights.size(), gpu::kMaxLights));

@@ -21,7 +21,7 @@ struct ShadowSettings {
 
 // The renderer's light block holds this many lights (gpu::kMaxLights, checked where the block is
 // filled); scene files with more are refused rather than drawn with some lights missing.
-inline constexpr int kMaxLights = 8;
+inline constexpr int kLightLimit = 8;
 
 struct Light {
     enum class Type { Directional, Spot, Point, Projector };

@@ -54,7 +54,7 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 // What a loaded scene promises the renderer.
 void expectDrawable(const Scene& s, const Case& c) {
     ASSERT_FALSE(s.objects.empty()) << c.what;
-    EXPECT_LE(s.lights.size(), static_cast<std::size_t>(kMaxLights)) << c.what;
+    EXPECT_LE(s.lights.size(), static_cast<std::size_t>(kLightLimit)) << c.what;
     EXPECT_TRUE(finite(s.camera.position) && finite(s.camera.target)) << c.what;
     for (const auto& o : s.objects) {
         ASSERT_TRUE(o.mesh >= 0 && o.mesh < static_cast<int>(s.meshes.size())) << c.what;

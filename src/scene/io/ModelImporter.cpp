@@ -71,7 +71,7 @@ private:
             if (v != before) fixed += std::string(fixed.empty() ? "" : ", ") + what;
         };
         clampTo(out.alpha, 0.0f, 1.0f, 1.0f, "opacity");
-        clampTo(out.alphaCutoff, 0.0f, 1.0f, 0.0f, "alpha cutoff");
+        clampTo(out.alphaCutoff, 0.0f, 2.0f, 0.0f, "alpha cutoff");  // glTF: >= 0; above 1 all is cut
         clampTo(out.shininess, 1e-3f, 1e4f, 32.0f, "shininess");
         for (int i = 0; i < 3; ++i) {
             clampTo(out.transmission[i], 0.0f, 1.0f, 0.0f, "transmission");

@@ -240,7 +240,7 @@ int readMaterial(const Reader& r, const json& j, const std::string& p, Scene& sc
     if (glm::any(glm::lessThan(m.transmission, glm::vec3(0))) || glm::any(glm::greaterThan(m.transmission, glm::vec3(1))))
         r.fail(p, "transmission", "'transmission' must be within 0..1 per channel");
     m.alphaCutoff = r.number(j, "alpha_cutoff", p, m.alphaCutoff);
-    if (m.alphaCutoff < 0 || m.alphaCutoff > 1) r.fail(p, "alpha_cutoff", "'alpha_cutoff' must be within 0..1");
+    if (m.alphaCutoff < 0) r.fail(p, "alpha_cutoff", "'alpha_cutoff' must be >= 0 (above 1 every texel is a hole)");
     if (j.contains("double_sided")) m.doubleSided = j["double_sided"].is_boolean() && j["double_sided"].get<bool>();
     if (j.contains("texture")) {
         scene.images.push_back(loadImageOrChecker(r.resolve(r.string(j, "texture", p, "")), r.file().string()));
@@ -385,9 +385,9 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
     }
     if (doc.contains("lights")) {
         if (!doc["lights"].is_array()) r.fail("", "lights", "'lights' must be an array");
-        if (doc["lights"].size() > static_cast<std::size_t>(kMaxLights))
+        if (doc["lights"].size() > static_cast<std::size_t>(kLightLimit))
             r.fail("", "lights", std::to_string(doc["lights"].size()) + " lights; penumbra draws at most " +
-                                     std::to_string(kMaxLights));
+                                     std::to_string(kLightLimit));
         for (std::size_t i = 0; i < doc["lights"].size(); ++i)
             readLight(r, doc["lights"][i], "lights[" + std::to_string(i) + "]", scene);
     }
