@@ -28,6 +28,7 @@ for t in "${targets[@]}"; do
   args=(-timeout=10 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$art")
   [ -n "$dict" ] && args+=(-dict="tests/fuzz/dict/$dict.dict")
   regressions=(); [ -d "tests/fuzz/regressions/$t" ] && regressions=("tests/fuzz/regressions/$t")
+  [ "$t" = shader_include ] && regressions+=(shaders)  # the renderer's own GLSL seeds it too
   set +e
   build-fuzz/fuzz_"$t" "${limit[@]}" "${args[@]}" "$work" "tests/fuzz/seeds/$t" "${regressions[@]}" \
     >"build-fuzz/work/$t.log" 2>&1

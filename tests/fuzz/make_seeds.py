@@ -98,7 +98,7 @@ pixels = bytes([0, 0, 255, 0, 255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 0])  # 
 put("image", "rgb.bmp", b"BM" + struct.pack("<IHHI", 54 + len(pixels), 0, 0, 54) +
     struct.pack("<IiiHHIIiiII", 40, 2, 2, 1, 24, 0, len(pixels), 2835, 2835, 0, 0) + pixels)
 
-# --- GLSL: includes, a nested chain, a cycle, an override slot, and the renderer's shaders.
+# --- GLSL: includes, a nested chain, a cycle, an override slot.
 put("shader_include", "chain.glsl", b'#version 450 core\n#include "a.glsl"\n#include "slot.glsl"\nvoid main() {}\n'
     b'\n@@file slot.glsl\nfloat slot() { return 1.0; }\n'
     b'\n@@file a.glsl\n#include "b.glsl"\nfloat a() { return b(); }\n'
@@ -106,9 +106,7 @@ put("shader_include", "chain.glsl", b'#version 450 core\n#include "a.glsl"\n#inc
 put("shader_include", "cycle.glsl", b'#version 450 core\n#include "x.glsl"\n\n@@file x.glsl\n#include "y.glsl"\n'
     b'\n@@file y.glsl\n#include "x.glsl"\n#include "main.glsl"\n')
 put("shader_include", "missing.glsl", b'#version 450 core\n  #  include   "nowhere.glsl"  \n')
-for p in sorted((root / "shaders").rglob("*")):
-    if p.is_file():
-        put("shader_include", p.parent.name + "_" + p.name, rd(p))
+# (the renderer's own shaders/ are a seed folder of their own, see tests/fuzz/CMakeLists.txt)
 print("seeds:", {d.name: len(list(d.iterdir())) for d in sorted(seeds.iterdir())})
 
 # --- libFuzzer dictionaries: the keys and keywords each format is made of.
