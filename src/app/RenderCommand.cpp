@@ -108,7 +108,7 @@ BatchResult renderBatch(const BatchJob& job) {
             std::snprintf(name, sizeof name, "frame_%04d.png", i);
             util::writePng(job.outDir / name, width, height, pixels);
         }
-        const PassTimes& p = renderer.waitForTimes();  // the read-back has synchronised anyway
+        const PassTimes& p = renderer.waitForTimes();  // a PNG's read-back has synchronised already
         const auto& triangles = renderer.shadowTriangles();
         if (result.shadowTriangles.size() < triangles.size()) result.shadowTriangles.resize(triangles.size());
         for (std::size_t l = 0; l < triangles.size(); ++l)

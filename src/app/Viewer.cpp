@@ -225,9 +225,7 @@ int runViewer(const ViewerOptions& opts) {
     const auto& registry = shadows::techniqueRegistry();
     while (!window.shouldClose()) {
         glfwPollEvents();
-        if (opts.resizeStorm) {
-            stormDrill(win, renderer, registry, stormStep++);
-        }
+        if (opts.resizeStorm) stormDrill(win, renderer, registry, stormStep++);
         if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
             state.shaderError = renderer.reloadShaders();
             if (state.shaderError.empty()) log::info("shaders reloaded");

@@ -14,7 +14,7 @@ struct ViewerOptions {
     bool debugContext = false;
     int exitAfterFrames = 0;  // > 0: quit after that many frames (scripted runs, screenshots)
     // Robustness drill (issue 12): every frame the next of minimise, restore, 1x1, 8192x8192,
-    // 800x600 and a switch to the next technique. Counts its steps towards exitAfterFrames.
+    // 800x600 and a switch to the next technique (exitAfterFrames counts drawn frames only).
     bool resizeStorm = false;
     std::filesystem::path screenshotDir = ".";
 };

@@ -31,21 +31,25 @@ std::vector<NamedPart> splitParts(const std::uint8_t* data, std::size_t size, co
     return parts;
 }
 
-fs::path freshScratchFolder() {
+// This process's scratch folder, created on first use and removed when the process exits.
+static const fs::path& scratchFolder() {
     static const fs::path folder = [] {
         const char* tmp = std::getenv("TMPDIR");
         fs::path f = fs::path(tmp && *tmp ? tmp : "/tmp") / ("penumbra-fuzz-" + std::to_string(::getpid()));
         fs::create_directories(f);
         std::atexit([] {
             std::error_code ec;
-            fs::remove_all(fs::path(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp") /
-                               ("penumbra-fuzz-" + std::to_string(::getpid())), ec);
+            fs::remove_all(scratchFolder(), ec);
         });
         return f;
     }();
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(folder, ec)) fs::remove_all(entry.path(), ec);
     return folder;
+}
+
+fs::path freshScratchFolder() {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(scratchFolder(), ec)) fs::remove_all(entry.path(), ec);
+    return scratchFolder();
 }
 
 fs::path writeParts(const std::vector<NamedPart>& parts) {

@@ -5,6 +5,7 @@
 //   - a scene that loads, with every broken texture replaced by the checker and a warning that
 //     names it, and every index, number and count within what the renderer can draw.
 // Never a crash, a hang (ctest's timeout) or an exception of another type.
+#include "DrawableScene.h"
 #include "scene/io/ModelImporter.h"
 #include "scene/io/SceneFile.h"
 #include "util/Error.h"
@@ -49,32 +50,6 @@ struct Tally {
     int errors = 0, loaded = 0, fallbacks = 0;
 };
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// What a loaded scene promises the renderer.
-void expectDrawable(const Scene& s, const Case& c) {
-    ASSERT_FALSE(s.objects.empty()) << c.what;
-    EXPECT_LE(s.lights.size(), static_cast<std::size_t>(kLightLimit)) << c.what;
-    EXPECT_TRUE(finite(s.camera.position) && finite(s.camera.target)) << c.what;
-    for (const auto& o : s.objects) {
-        ASSERT_TRUE(o.mesh >= 0 && o.mesh < static_cast<int>(s.meshes.size())) << c.what;
-        EXPECT_TRUE(finite(o.position) && finite(o.scale)) << c.what;
-    }
-    for (const auto& m : s.meshes) {
-        for (std::uint32_t i : m.indices) ASSERT_LT(i, m.vertices.size()) << c.what;
-        for (const auto& v : m.vertices) ASSERT_TRUE(finite(v.position) && finite(v.normal)) << c.what;
-        for (const auto& p : m.parts) ASSERT_TRUE(p.material >= 0 && p.material < static_cast<int>(s.materials.size())) << c.what;
-    }
-    for (const auto& mat : s.materials) {
-        EXPECT_TRUE(mat.alpha >= 0 && mat.alpha <= 1) << c.what;
-        EXPECT_LT(mat.diffuseTexture, static_cast<int>(s.images.size())) << c.what;
-    }
-    for (const auto& img : s.images) {
-        ASSERT_GT(img.width, 0) << c.what;
-        ASSERT_EQ(img.rgba.size(), static_cast<std::size_t>(img.width) * img.height * 4) << c.what;
-    }
-}
-
 void run(const Case& c, Tally& tally) {
     log::takeWarnings();
     try {
@@ -82,7 +57,7 @@ void run(const Case& c, Tally& tally) {
         const auto warnings = log::takeWarnings();
         ASSERT_NE(c.expect, Expect::Error) << c.what << ": loaded, but must be refused";
         ASSERT_NE(c.expect, Expect::ErrorWithLine) << c.what << ": loaded, but must be refused";
-        expectDrawable(s, c);
+        ASSERT_EQ(fuzz::whyNotDrawable(s), "") << c.what;
         const bool anyFallback = std::any_of(s.images.begin(), s.images.end(), [](const Image& i) { return i.fallback; });
         if (c.expect == Expect::Fallback) {
             EXPECT_TRUE(anyFallback) << c.what << ": the broken texture must become the checker";

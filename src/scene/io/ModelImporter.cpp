@@ -11,16 +11,17 @@
 #include <assimp/version.h>
 
 #include <glm/gtc/type_ptr.hpp>
-#include <fstream>
-#include <map>
-#include <sstream>
+
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <csignal>
+#include <fstream>
+#include <map>
 #include <poll.h>
+#include <sstream>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -203,9 +204,20 @@ int lineFromMessage(const std::string& msg) {
     return 0;
 }
 
-constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
 int importTimeoutSeconds = 120;
+
+// The one way penumbra reads a file with Assimp: triangles only, smooth normals, validated. The
+// probe child and this process must read identically for the probe to vouch for the real read.
+const aiScene* readWithAssimp(Assimp::Importer& importer, const fs::path& file) {
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    return importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                                aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                                                aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
+}
+
+std::string assimpName() {
+    return "the importer (Assimp " + std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) + ")";
+}
 
 // Assimp (Debian's 5.2) crashes on some malformed OBJ files and loops forever on some PLY
 // headers; tests/fuzz found both. Its reader therefore runs first in a child process: if the
@@ -229,8 +241,7 @@ void probeInChildProcess(const fs::path& file) {
         if (::getppid() == 1) ::_exit(0);
         ::close(pipeFds[0]);
         Assimp::Importer importer;
-        importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-        importer.ReadFile(file.string(), kImportFlags);
+        readWithAssimp(importer, file);
         ::_exit(0);  // the pipe's write end closes here, which wakes the parent's poll
     }
     ::close(pipeFds[1]);
@@ -250,19 +261,18 @@ void probeInChildProcess(const fs::path& file) {
     int status = 0;
     while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
     if (ready <= 0)
-        throw InputError(file, "cannot read model: the importer (Assimp " + std::to_string(aiGetVersionMajor()) + "." +
-                                   std::to_string(aiGetVersionMinor()) + ") did not finish within " +
+        throw InputError(file, "cannot read model: " + assimpName() + " did not finish within " +
                                    std::to_string(importTimeoutSeconds) + " s; the file is malformed or too large");
     if (WIFSIGNALED(status))
-        throw InputError(file, "cannot read model: the importer (Assimp " + std::to_string(aiGetVersionMajor()) + "." +
-                                   std::to_string(aiGetVersionMinor()) + ") crashed on this file (signal " +
+        throw InputError(file, "cannot read model: " + assimpName() + " crashed on this file (signal " +
                                    std::to_string(WTERMSIG(status)) + "); the file is malformed");
 }
 
-// Assimp's PLY reader loops forever on a binary file shorter than its header promises (a cut
-// download, say). The header says how many vertices and faces follow; each needs at least its
-// fixed-size properties (and a list's count), so a file shorter than that is refused at once.
-void checkBinaryPlyLength(const fs::path& file) {
+// Assimp's PLY reader loops forever on a PLY cut short (a broken download, say): a header without
+// `end_header`, or binary data shorter than the header promises. The header says how many
+// vertices and faces follow; each needs at least its fixed-size properties (and a list's count),
+// so a file shorter than that is refused at once, before the probe would wait out its limit.
+void checkPlyIsWhole(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;
@@ -313,11 +323,10 @@ int importModel(const fs::path& file, Scene& scene) {
     if (!fs::exists(file, ec)) throw InputError(file, "model file not found");
     // A folder or a device (/dev/zero, a FIFO) would make the importer fail or read forever.
     if (!fs::is_regular_file(file, ec)) throw InputError(file, "model path is not a regular file");
-    checkBinaryPlyLength(file);
+    checkPlyIsWhole(file);
     probeInChildProcess(file);
     Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* ai = importer.ReadFile(file.string(), kImportFlags);
+    const aiScene* ai = readWithAssimp(importer, file);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
         const std::string msg = importer.GetErrorString();
         throw InputError(file, lineFromMessage(msg), "cannot read model: " + (msg.empty() ? "unknown error" : msg));

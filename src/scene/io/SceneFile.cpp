@@ -63,8 +63,11 @@ public:
         return static_cast<float>(d);
     }
 
-    // Every element of an array of numbers, each finite (as number()).
-    std::vector<float> numbers(const json& v, const char* key, const std::string& path) const {
+    // An array of exactly `count` numbers, each finite (as number()); else fails with `shape`.
+    std::vector<float> numbers(const json& v, std::size_t count, const char* key, const std::string& path,
+                               const std::string& shape) const {
+        if (!v.is_array() || v.size() != count || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); }))
+            fail(path, key, shape);
         std::vector<float> out;
         for (const json& e : v) out.push_back(finiteFloat(e.get<double>(), key, path));
         return out;
@@ -83,9 +86,7 @@ public:
 
     glm::vec3 vec3Value(const json& v, const char* key, const std::string& path) const {
         if (v.is_number()) return glm::vec3(finiteFloat(v.get<double>(), key, path));
-        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); }))
-            fail(path, key, std::string("'") + key + "' must be an array of 3 numbers");
-        const std::vector<float> f = numbers(v, key, path);
+        const std::vector<float> f = numbers(v, 3, key, path, std::string("'") + key + "' must be an array of 3 numbers");
         return {f[0], f[1], f[2]};
     }
 
@@ -181,10 +182,7 @@ ShadowSettings readShadow(const Reader& r, const json& j, const std::string& p) 
     s.slopeBias = r.number(j, "slope_bias", p, s.slopeBias);
     s.normalOffset = r.number(j, "normal_offset", p, s.normalOffset);
     if (j.contains("polygon_offset")) {
-        const json& po = j["polygon_offset"];
-        if (!po.is_array() || po.size() != 2 || !po[0].is_number() || !po[1].is_number())
-            r.fail(p, "polygon_offset", "'polygon_offset' must be [factor, units]");
-        const std::vector<float> f = r.numbers(po, "polygon_offset", p);
+        const std::vector<float> f = r.numbers(j["polygon_offset"], 2, "polygon_offset", p, "'polygon_offset' must be [factor, units]");
         s.polygonOffset = {f[0], f[1]};
     }
     return s;
@@ -254,9 +252,7 @@ Track readTrack(const Reader& r, const json& keys, const std::string& p, const c
     if (!keys.is_array() || keys.empty()) r.fail(p, key, "keyframes must be a non-empty array of [t, x, y, z]");
     std::vector<Keyframe> out;
     for (const auto& k : keys) {
-        if (!k.is_array() || k.size() != 4 || !std::all_of(k.begin(), k.end(), [](const json& e) { return e.is_number(); }))
-            r.fail(p, key, "each keyframe must be [t, x, y, z]");
-        const std::vector<float> f = r.numbers(k, key, p);
+        const std::vector<float> f = r.numbers(k, 4, key, p, "each keyframe must be [t, x, y, z]");
         out.push_back({f[0], {f[1], f[2], f[3]}});
     }
     try {
@@ -297,10 +293,7 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
         if (shape == "plane") {
             glm::vec2 size{10.0f};
             if (j.contains("size")) {
-                const json& s = j["size"];
-                if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number())
-                    r.fail(p, "size", "a plane's 'size' is [x, z]");
-                const std::vector<float> f = r.numbers(s, "size", p);
+                const std::vector<float> f = r.numbers(j["size"], 2, "size", p, "a plane's 'size' is [x, z]");
                 if (!(f[0] > 0 && f[1] > 0)) r.fail(p, "size", "a plane's 'size' must be > 0");
                 size = {f[0], f[1]};
             }
