@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <malloc.h>
 #include <unistd.h>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -23,7 +24,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Resident memory after handing glibc's free heap back to the system, so that the soak record
+// follows live memory rather than how much freed memory the allocator happens to keep.
 long residentKiB() {
+    ::malloc_trim(0);
     std::ifstream statm("/proc/self/statm");
     long pages = 0, resident = 0;
     statm >> pages >> resident;
