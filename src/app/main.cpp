@@ -30,7 +30,11 @@ int runRender(const app::BatchJob& job) {
     std::printf("triangles drawn into shadow maps per frame, per light:");
     for (double t : r.shadowTriangles) std::printf(" %.0f", t);
     std::printf("\n");
-    std::printf("wrote %s/frame_0000.png .. and %s\n", job.outDir.string().c_str(), r.statsFile.string().c_str());
+    if (job.pngEvery > 0)
+        std::printf("wrote %s/frame_0000.png .. (every %d) and %s\n", job.outDir.string().c_str(), job.pngEvery,
+                    r.statsFile.string().c_str());
+    else
+        std::printf("wrote %s (no PNG: --png-every 0)\n", r.statsFile.string().c_str());
     if (!r.soak.empty()) {
         long maxRss = 0, maxObjects = 0;
         int errors = 0;
