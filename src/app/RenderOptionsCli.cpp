@@ -19,6 +19,8 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     if (which.shadowResolution)
         command.add_option("--shadow-res", options.shadowResolution, "shadow-map resolution for every light")
             ->check(CLI::Range(16, 16384));
+    command.add_option("--anisotropy", options.anisotropy, "anisotropic filtering of textures and projector pictures, 1-16 (default 1: trilinear)")
+        ->check(CLI::Range(1, 16));
     command.add_option_function<std::vector<std::string>>(
         "--param",
         [&options](const std::vector<std::string>& texts) {

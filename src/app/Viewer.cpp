@@ -123,6 +123,8 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
         if (renderer.options().transparency == render::TransparencyMode::DepthPeeling ||
             renderer.options().transparency == render::TransparencyMode::DualDepthPeeling)
             ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
+        int anisotropy = renderer.options().anisotropy;
+        if (ImGui::SliderInt("anisotropy", &anisotropy, 1, 16)) renderer.setAnisotropy(anisotropy);
         ImGui::Checkbox("animate (space)", &state.animate);
         ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
         int mode = static_cast<int>(controller.mode());

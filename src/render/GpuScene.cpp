@@ -7,18 +7,18 @@
 
 namespace penumbra::render {
 
-gl::Texture uploadImage(const scene::Image& img) {
+gl::Texture uploadImage(const scene::Image& img, float anisotropy) {
     const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(img.width, img.height))));
     gl::Texture t = gl::Texture::create2D(img.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, levels);
     glTextureSubImage2D(t.id(), 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     glGenerateTextureMipmap(t.id());
     t.setWrap(GL_REPEAT);
     t.setFilter(img.fallback ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR, img.fallback ? GL_NEAREST : GL_LINEAR);
-    glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+    glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
     return t;
 }
 
-GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
+GpuScene::GpuScene(const scene::Scene& scene, float anisotropy) : scene_(scene) {
     for (const auto& mesh : scene.meshes) {
         GpuMesh g{gl::Buffer(std::span<const scene::Vertex>(mesh.vertices)),
                   gl::Buffer(std::span<const std::uint32_t>(mesh.indices)), gl::VertexArray()};
@@ -29,7 +29,11 @@ GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
         g.vao.attribute(2, 0, 2, offsetof(scene::Vertex, uv));
         meshes_.push_back(std::move(g));
     }
-    for (const auto& img : scene.images) images_.push_back(uploadImage(img));
+    for (const auto& img : scene.images) images_.push_back(uploadImage(img, anisotropy));
+}
+
+void GpuScene::setAnisotropy(float anisotropy) {
+    for (const gl::Texture& t : images_) glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
 }
 
 std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {

@@ -26,7 +26,9 @@ struct Draw {
 
 class GpuScene {
 public:
-    explicit GpuScene(const scene::Scene& scene);
+    // `anisotropy`: the most anisotropic filtering of the scene's textures (1 = trilinear only).
+    explicit GpuScene(const scene::Scene& scene, float anisotropy = 1.0f);
+    void setAnisotropy(float anisotropy);
 
     // All parts of all objects at `time`; translucent ones sorted back to front from `eye`.
     std::vector<Draw> draws(float time, const glm::vec3& eye) const;
@@ -48,7 +50,8 @@ private:
     mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 
-// Uploads an RGBA8 image with mipmaps (sRGB when it holds colour).
-gl::Texture uploadImage(const scene::Image& image);
+// Uploads an RGBA8 image with mipmaps (sRGB when it holds colour), trilinear, with at most
+// `anisotropy` anisotropic samples.
+gl::Texture uploadImage(const scene::Image& image, float anisotropy = 1.0f);
 
 }  // namespace penumbra::render

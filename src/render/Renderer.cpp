@@ -4,6 +4,7 @@
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
 #include "render/LightBlock.h"
+#include "render/LightingProgram.h"
 #include "util/Log.h"
 
 #include <algorithm>
@@ -56,14 +57,14 @@ static PassPrograms buildPassPrograms() {
             gl::Program::build({.vertex = "shaders/passes/lines.vert", .fragment = "shaders/passes/lines.frag"})};
 }
 
-static gl::Program buildLighting(const shadows::ShadowTechnique& technique) {
-    return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
-                               .fragment = "shaders/passes/lighting.frag",
-                               .includeOverrides = {{"shadow_lookup.glsl", technique.lookupShader()}}});
+// The light layout the first frame will have (slots depend on the lights alone), so that the
+// constructor builds, and checks, the program that frame uses.
+static std::vector<std::string> initialLightLayout(const std::vector<scene::Light>& lights) {
+    return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), shadows::ShadowSlots::assign(lights)));
 }
 
 Renderer::Renderer(scene::Scene& scene, RenderOptions options)
-    : scene_(scene), options_(std::move(options)), gpu_(scene), lightBlock_(sizeof(gpu::LightBlock), nullptr) {
+    : scene_(scene), options_(std::move(options)), gpu_(scene, static_cast<float>(options_.anisotropy)), lightBlock_(sizeof(gpu::LightBlock), nullptr) {
     if (scene_.lights.size() > static_cast<std::size_t>(gpu::kMaxLights))
         throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
                                     std::to_string(gpu::kMaxLights) + " are supported");
@@ -82,7 +83,8 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     options_.technique = chosenTechnique(options_, scene_);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
-    lighting_ = buildLighting(*technique_);
+    lightLayout_ = initialLightLayout(scene_.lights);
+    lighting_ = buildLightingProgram(technique_->lookupShader(), lightLayout_);
     PassPrograms passes = buildPassPrograms();
     resolve_ = std::move(passes.resolve);
     overlay_ = std::move(passes.overlay);
@@ -92,7 +94,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
 void Renderer::setTechnique(const std::string& name) {
     auto technique = shadows::createTechnique(name);
     configure(*technique, options_);
-    gl::Program lighting = buildLighting(*technique);
+    gl::Program lighting = buildLightingProgram(technique->lookupShader(), lightLayout_);
     technique_ = std::move(technique);
     lighting_ = std::move(lighting);
     oit_.reset();  // its lighting variants include the old technique's lookup
@@ -105,7 +107,7 @@ std::string Renderer::reloadShaders() {
         shadows::ParameterValues current;
         for (const auto& p : technique_->parameters()) current.emplace_back(p.name, p.text());
         shadows::applyParameters(technique->parameters(), current);
-        gl::Program lighting = buildLighting(*technique);
+        gl::Program lighting = buildLightingProgram(technique->lookupShader(), lightLayout_);
         PassPrograms passes = buildPassPrograms();
         technique_ = std::move(technique);
         lighting_ = std::move(lighting);
@@ -122,6 +124,11 @@ std::string Renderer::reloadShaders() {
 void Renderer::setOutputMode(OutputMode mode, int debugLight) {
     options_.output = mode;
     options_.debugLight = debugLight;
+}
+
+void Renderer::setAnisotropy(int anisotropy) {
+    options_.anisotropy = std::clamp(anisotropy, 1, 16);
+    gpu_.setAnisotropy(static_cast<float>(options_.anisotropy));
 }
 
 int Renderer::effectiveResolution(const scene::Light& light) const {
@@ -154,6 +161,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     const gpu::LightBlock block = packLights(scene_.lights, spaces, slots_);
     lightBlock_.update(0, sizeof(block), &block);
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
+    useLightLayout(lightLayoutDefines(block));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
@@ -220,7 +228,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
             drawSurfaces(draws, true, camera, aspect);
         } else if (shaded) {
-            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader());
+            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightLayout_);
             oit_->render(mode, options_.peelLayers, gpu_, draws,
                          [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
                          height);
@@ -235,6 +243,15 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         timer_.end(Pass::Post);
     }
     timer_.endFrame();
+}
+
+// Lights added, removed, retyped or shadowed differently change the layout the lighting
+// programs are specialised to: rebuild them (rare; a compile costs ~0.1-1 s on llvmpipe).
+void Renderer::useLightLayout(std::vector<std::string> layout) {
+    if (layout == lightLayout_) return;
+    lighting_ = buildLightingProgram(technique_->lookupShader(), layout);
+    lightLayout_ = std::move(layout);
+    oit_.reset();
 }
 
 // The technique's world-space lines (cascade frusta, ...), depth-tested against the scene.

@@ -2,19 +2,12 @@
 
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
-
+#include "render/LightingProgram.h"
 
 namespace penumbra::render {
 
 namespace {
 constexpr int kStochasticSamples = 4;  // llvmpipe's maximum
-
-gl::Program lightingVariant(const std::filesystem::path& lookup, const char* define) {
-    return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
-                               .fragment = "shaders/passes/lighting.frag",
-                               .defines = {define},
-                               .includeOverrides = {{"shadow_lookup.glsl", lookup}}});
-}
 }  // namespace
 
 const char* toString(TransparencyMode mode) {
@@ -29,14 +22,19 @@ const char* toString(TransparencyMode mode) {
     return "?";
 }
 
-OrderIndependentTransparency::OrderIndependentTransparency(const std::filesystem::path& lookup)
-    : weightedProgram_(lightingVariant(lookup, "TRANSLUCENT_WEIGHTED")),
-      peelProgram_(lightingVariant(lookup, "TRANSLUCENT_PEEL")),
-      dualPeelProgram_(lightingVariant(lookup, "TRANSLUCENT_DUAL_PEEL")),
-      stochasticDepthProgram_(lightingVariant(lookup, "TRANSLUCENT_STOCHASTIC_DEPTH")),
-      stochasticAccumProgram_(lightingVariant(lookup, "TRANSLUCENT_STOCHASTIC_ACCUM")),
+OrderIndependentTransparency::OrderIndependentTransparency(const std::filesystem::path& lookup,
+                                                           std::vector<std::string> lightLayout)
+    : lookup_(lookup), lightLayout_(std::move(lightLayout)),
       resolve_(gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                    .fragment = "shaders/passes/transparency_resolve.frag"})) {}
+
+const gl::Program& OrderIndependentTransparency::variant(const std::string& define) {
+    auto found = variants_.find(define);
+    if (found != variants_.end()) return found->second;
+    std::vector<std::string> defines = lightLayout_;
+    defines.push_back(define);
+    return variants_.emplace(define, buildLightingProgram(lookup_, defines)).first->second;
+}
 
 void OrderIndependentTransparency::ensure(int w, int h, int layers) {
     if (w == width_ && h == height_ && layers == layers_) return;
@@ -101,13 +99,13 @@ void OrderIndependentTransparency::render(TransparencyMode mode, int layers, con
     layers = std::max(1, layers);
     ensure(w, h, layers);
     if (mode == TransparencyMode::WeightedBlended) {
-        weighted(gpu, draws, prepare, opaqueDepth, weightedProgram_);
+        weighted(gpu, draws, prepare, opaqueDepth, variant("TRANSLUCENT_WEIGHTED"));
         composite(0, 0, hdr, w, h);
     } else if (mode == TransparencyMode::Stochastic) {
         stochasticDepth(gpu, draws, prepare, opaqueDepth);
         stochasticDepth_.bind(gpu::kUnitStochasticDepth);
         opaqueDepth.bind(gpu::kUnitOpaqueDepth);
-        weighted(gpu, draws, prepare, opaqueDepth, stochasticAccumProgram_);  // same targets, visibility weights
+        weighted(gpu, draws, prepare, opaqueDepth, variant("TRANSLUCENT_STOCHASTIC_ACCUM"));  // same targets, visibility weights
         glBindTextureUnit(gpu::kUnitStochasticDepth, 0);
         glBindTextureUnit(gpu::kUnitOpaqueDepth, 0);
         composite(0, 0, hdr, w, h);
@@ -127,10 +125,11 @@ void OrderIndependentTransparency::stochasticDepth(const GpuScene& gpu, const st
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(stochasticFbo_.id(), GL_DEPTH, 0, &farDepth);
     const gl::ScopedPassState state(gl::PassState::depthOnly());
-    prepare(stochasticDepthProgram_);
+    const gl::Program& program = variant("TRANSLUCENT_STOCHASTIC_DEPTH");
+    prepare(program);
     opaqueDepth.bind(gpu::kUnitOpaqueDepth);
     for (const Draw& d : draws)
-        if (d.translucent && d.visible) gpu.draw(d, stochasticDepthProgram_);
+        if (d.translucent && d.visible) gpu.draw(d, program);
 }
 
 void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vector<Draw>& draws, const Prepare& prepare,
@@ -153,7 +152,8 @@ void OrderIndependentTransparency::weighted(const GpuScene& gpu, const std::vect
 
 void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const std::vector<Draw>& draws,
                                         const Prepare& prepare, const gl::Texture& opaqueDepth) {
-    prepare(peelProgram_);
+    const gl::Program& program = variant("TRANSLUCENT_PEEL");
+    prepare(program);
     opaqueDepth.bind(gpu::kUnitOpaqueDepth);
     const float black[4] = {0, 0, 0, 0}, white[4] = {1, 1, 1, 1}, nearDepth = 0.0f, farDepth = 1.0f;
     // "Previous layer" of the first pass: depth 0, so every fragment is behind it.
@@ -167,7 +167,7 @@ void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const s
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
         peelDepth_[(i + 1) % 2].bind(gpu::kUnitPeelDepth);  // the layer before this one
         for (const Draw& d : draws)
-            if (d.translucent && d.visible) gpu.draw(d, peelProgram_);
+            if (d.translucent && d.visible) gpu.draw(d, program);
     }
     glBindTextureUnit(gpu::kUnitPeelDepth, 0);
     glBindTextureUnit(gpu::kUnitOpaqueDepth, 0);
@@ -175,7 +175,8 @@ void OrderIndependentTransparency::peel(int layers, const GpuScene& gpu, const s
 
 void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, const std::vector<Draw>& draws,
                                             const Prepare& prepare, const gl::Texture& opaqueDepth) {
-    prepare(dualPeelProgram_);
+    const gl::Program& program = variant("TRANSLUCENT_DUAL_PEEL");
+    prepare(program);
     opaqueDepth.bind(gpu::kUnitOpaqueDepth);
     // Bounds and colours keep the largest value (MAX), transmittances the smallest (MIN, draw
     // buffers 2 and 4 of the peeling passes): every fragment writes neutral values except into
@@ -187,7 +188,7 @@ void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, con
                 white[4] = {1, 1, 1, 1};
     auto drawAll = [&] {
         for (const Draw& d : draws)
-            if (d.translucent && d.visible) gpu.draw(d, dualPeelProgram_);
+            if (d.translucent && d.visible) gpu.draw(d, program);
     };
     // Initial bounds: every translucent fragment lies within (0, 1); MAX gives (-nearest, farthest).
     glClearTexImage(dualDepth_[1].id(), 0, GL_RG, GL_FLOAT, everything);

@@ -15,6 +15,7 @@
 #include "render/GpuScene.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,9 @@ const char* toString(TransparencyMode mode);
 
 class OrderIndependentTransparency {
 public:
-    // `lookupShader`: the shadow technique's GLSL (the lighting variants include it).
-    explicit OrderIndependentTransparency(const std::filesystem::path& lookupShader);
+    // `lookupShader`: the shadow technique's GLSL (the lighting variants include it);
+    // `lightLayout`: the renderer's light-layout defines (render/LightingProgram.h).
+    OrderIndependentTransparency(const std::filesystem::path& lookupShader, std::vector<std::string> lightLayout);
 
     // `prepare` sets camera, light and shadow-lookup state on a lighting program.
     using Prepare = std::function<void(const gl::Program&)>;
@@ -45,7 +47,14 @@ private:
                   const gl::Texture& opaqueDepth);
     void composite(int mode, int layers, const gl::Framebuffer& hdr, int width, int height);
 
-    gl::Program weightedProgram_, peelProgram_, dualPeelProgram_, stochasticDepthProgram_, stochasticAccumProgram_, resolve_;
+    // The lighting variant of one mode (TRANSLUCENT_WEIGHTED, ...), built on first use: a mode
+    // never used costs no compile.
+    const gl::Program& variant(const std::string& define);
+
+    std::filesystem::path lookup_;
+    std::vector<std::string> lightLayout_;
+    std::map<std::string, gl::Program> variants_;
+    gl::Program resolve_;
     gl::VertexArray fullscreen_;
     int width_ = 0, height_ = 0, layers_ = 0;
     gl::Texture accum_, transmit_, depthCopy_, layerColour_, layerTransmit_, peelDepth_[2];

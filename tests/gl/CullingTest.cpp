@@ -74,5 +74,35 @@ TEST(Culling, ATranslucentCasterLeavingTheLightLeavesNoStaleTint) {
     EXPECT_LT(glm::length(centreAt(2.0f) - tinted), 0.02f) << "the pane is back";
 }
 
+// The view-dependent maps keep the sun's depth in layers of their own: each opaque caster is
+// drawn once per layer it reaches, and the sun's plain depth map (kept for the coloured tint)
+// is drawn only when a translucent caster needs it as the tint pass's depth test.
+TEST(Culling, ViewDependentMapsDrawTheSunsCastersOncePerLayer) {
+    const std::string opaque = R"({ "shape": "plane", "size": [12, 12] }, { "shape": "box", "position": [0, 0.5, 0] })";
+    const std::string pane = R"(, { "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, 0], "rotation_deg": [90, 0, 0],
+                                    "material": { "transmission": [0.1, 0.9, 0.1] } })";
+    auto sunTriangles = [&](const std::string& technique, bool withPane) {
+        scene::Scene s = sceneFromJson(R"({
+          "camera": { "position": [4, 5, 6], "target": [0, 0, 0] },
+          "lights": [ { "type": "directional", "direction": [-0.3, -1, -0.2], "shadow": { "resolution": 512 } } ],
+          "objects": [ )" + opaque + (withPane ? pane : "") + " ] }");
+        render::RenderOptions options;
+        options.technique = technique;
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(64, 64);
+        renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
+        return renderer.shadowTriangles().at(0);
+    };
+    const std::size_t opaqueTriangles = 2 + 12, paneTriangles = 2;
+    for (const char* technique : {"lispsm", "psm"}) {
+        EXPECT_EQ(sunTriangles(technique, false), opaqueTriangles) << technique << ": one layer, nothing else";
+        EXPECT_EQ(sunTriangles(technique, true), 2 * opaqueTriangles + paneTriangles)
+            << technique << ": the warped layer, the plain depth map and the pane's tint";
+    }
+    const std::size_t cascaded = sunTriangles("cascaded", false);
+    EXPECT_GE(cascaded, opaqueTriangles) << "every caster reaches the first cascade";
+    EXPECT_LE(cascaded, 4 * opaqueTriangles) << "at most once per cascade, and no plain map";
+}
+
 }  // namespace
 }  // namespace penumbra::test

@@ -87,6 +87,37 @@ TEST(Animation, ShadowFollowsTheMovingCaster) {
     EXPECT_NEAR(right - left, 6.0 / (2 * 12 * std::tan(glm::radians(25.0)) / 96), 2.0);
 }
 
+// The lighting program is specialised to the lights' types and shadow slots: lights edited
+// between frames (a shadow switched on, a light added, a light retyped) must rebuild it, and the
+// frame must follow. A slab at height 2 over x in [-4, -2] shadows the ground at x = -1 (pixel
+// 40 of 96 at ~8.6 px per unit) under a sun leaning towards +x, and under a light at (-5, 6, 0).
+TEST(LightLayout, LightsEditedBetweenFramesRebuildTheLighting) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0], "shadow": { "enabled": false } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] }, { "shape": "box", "size": [2, 0.2, 2], "position": [-3, 2, 0] } ] })");
+    const scene::Scene second = sceneFromJson(R"({ "lights": [
+      { "type": "spot", "position": [-5, 6, 0], "direction": [0, -1, 0], "angle_deg": 120, "range": 30 } ],
+      "objects": [ { "shape": "box" } ] })");
+    render::Renderer renderer(s, {});
+    render::OffscreenTarget target(96, 96);
+    // Shadow visibility of `light` on the ground at x = -1 (in the slab's shadow) and x = +2.
+    auto visibility = [&](int light) {
+        renderer.setOutputMode(OutputMode::Visibility, light);
+        renderer.render(0.0f, s.camera, 96, 96, target.framebuffer());
+        const Frame f{96, 96, renderer.readLinear()};
+        return std::pair{f.at(40, 48).r, f.at(65, 48).r};
+    };
+    EXPECT_EQ(visibility(0), std::pair(1.0f, 1.0f)) << "the sun casts no shadow yet";
+    s.lights[0].shadow.enabled = true;
+    EXPECT_EQ(visibility(0), std::pair(0.0f, 1.0f)) << "its shadow switched on";
+    s.lights.push_back(second.lights.front());
+    EXPECT_EQ(visibility(1), std::pair(0.0f, 1.0f)) << "a spot light added";
+    EXPECT_EQ(visibility(0), std::pair(0.0f, 1.0f)) << "the sun keeps its shadow beside it";
+    s.lights[1].type = scene::Light::Type::Point;
+    EXPECT_EQ(visibility(1), std::pair(0.0f, 1.0f)) << "the spot turned into a point light (a cube map)";
+}
+
 TEST(Fog, FarSurfacesFadeToTheBackground) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_deg": 60, "far": 100 },

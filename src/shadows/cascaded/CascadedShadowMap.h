@@ -8,7 +8,7 @@
 namespace penumbra::shadows {
 
 // Cascaded shadow maps for the first shadowed directional light: 1-8 splits placed by λ, all
-// rendered in one layered pass into a depth array, stabilised against shimmer, blended across
+// rendered into the layers of one depth array, stabilised against shimmer, blended across
 // borders, tinted per cascade on request, freezable to inspect from elsewhere. Other lights and
 // the coloured tint use the shared per-light maps.
 class CascadedShadowMap final : public ShadowTechnique {

@@ -59,7 +59,7 @@ void DepthAndTintMaps::setFiltering(GLenum filter) {
             if (t->id()) t->setFilter(filter, filter);
 }
 
-void DepthAndTintMaps::render(const ShadowFrame& frame) {
+void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
@@ -87,7 +87,15 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
         for (int f = 0; f < ls.faceCount; ++f) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];
-
+            const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
+            const bool anyTranslucent = withTint_ && (!frame.countCasters || frame.countCasters(translucent) > 0);
+            if (static_cast<int>(i) == depthElsewhere && !anyTranslucent) {
+                if (withTint_ && !m.tintWhite[face]) {
+                    glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
+                    m.tintWhite[face] = true;
+                }
+                continue;
+            }
             {
                 const gl::ScopedPassState state(opaquePass);
                 m.depthFaces[face].bind();
@@ -96,8 +104,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame) {
                 frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
             }
             if (!withTint_) continue;
-            const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
-            const bool anyTranslucent = !frame.countCasters || frame.countCasters(translucent) > 0;
             if (!anyTranslucent && m.tintWhite[face]) continue;  // still white: no clear, no pass
             glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
             m.tintWhite[face] = !anyTranslucent;

@@ -31,7 +31,11 @@ public:
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
     explicit DepthAndTintMaps(bool withTint = true);
-    void render(const ShadowFrame& frame);
+    // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
+    // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
+    // translucent casters need it as the depth test of the tint pass; otherwise the light costs
+    // no pass here (measured on the 975k-triangle grid: 965k triangles per frame saved).
+    void render(const ShadowFrame& frame, int depthElsewhere = -1);
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
     void bind(bool rawDepth = false) const;

@@ -9,9 +9,8 @@
 namespace penumbra::shadows {
 
 LayeredDepthMap::LayeredDepthMap() {
-    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/layered_caster.vert",
-                                   .fragment = "src/shadows/common/glsl/depth.frag",
-                                   .geometry = "src/shadows/common/glsl/layered_caster.geom"});
+    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
+                                   .fragment = "src/shadows/common/glsl/depth.frag"});
 }
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
@@ -22,24 +21,30 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         texture_.setFilter(GL_NEAREST, GL_NEAREST);
         texture_.setDepthCompare(true);
         view_ = gl::Texture::view2D(texture_, GL_DEPTH_COMPONENT32F, 0);
-        target_ = gl::Framebuffer();
-        target_.attach(GL_DEPTH_ATTACHMENT, texture_);  // layered: the geometry shader picks gl_Layer
-        target_.setNoColor();
-        target_.checkComplete("layered shadow map");
+        layerTargets_.clear();
+        for (int layer = 0; layer < count; ++layer) {
+            gl::Framebuffer target;
+            target.attachLayer(GL_DEPTH_ATTACHMENT, texture_, layer);
+            target.setNoColor();
+            target.checkComplete("layered shadow map, layer " + std::to_string(layer));
+            layerTargets_.push_back(std::move(target));
+        }
         resolution_ = res;
         layers_ = count;
     }
-    std::vector<glm::vec4> planes(clipPlanes);
-    planes.resize(static_cast<std::size_t>(count), glm::vec4(0, 0, 0, 1));  // w = 1: keep everything
     gl::unbindTextureUnits(gpu::kLightingUnits);  // see DepthAndTintMaps::render
     gl::PassState pass = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
-    pass.clipDistance0 = true;
+    pass.clipDistance0 = !clipPlanes.empty();
     const gl::ScopedPassState state(pass);
-    target_.beginDepthPass(res, res);
-    glProgramUniformMatrix4fv(casters_.id(), casters_.location("uLayerViewProj[0]"), count, GL_FALSE, &viewProj[0][0][0]);
-    glProgramUniform4fv(casters_.id(), casters_.location("uLayerClip[0]"), count, &planes[0].x);
-    casters_.set("uLayerCount", count);
-    frame.drawCasters(casters_, {Casters::Opaque, std::nullopt, frame.slots->sun});  // culled per layer in the geometry shader
+    for (int layer = 0; layer < count; ++layer) {
+        const auto l = static_cast<std::size_t>(layer);
+        layerTargets_[l].beginDepthPass(res, res);
+        casters_.set("uLightViewProj", viewProj[l]);
+        casters_.set("uClipPlane", l < clipPlanes.size() ? clipPlanes[l] : glm::vec4(0, 0, 0, 1));
+        // A caster outside the layer's clip volume would be clipped whole (no depth clamp here):
+        // culling it per object leaves the map unchanged.
+        frame.drawCasters(casters_, {Casters::Opaque, viewProj[l], frame.slots->sun});
+    }
 }
 
 DebugView LayeredDepthMap::debugView(const std::string& label) const {

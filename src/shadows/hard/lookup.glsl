@@ -7,7 +7,7 @@ vec3 tintBehind(vec4 tint, float depth) { return depth > tint.a ? tint.rgb : vec
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     LightData L = uLights[light];
-    int slot = int(L.cone.w);
+    int slot = lightShadowSlot(light);
     if (slot < 0) return vec3(1.0);
     ShadowCoord sc = shadowCoord(L, P, N, NdotL);
     if (!sc.inside) return vec3(1.0);

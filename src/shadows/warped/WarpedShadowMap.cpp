@@ -28,7 +28,8 @@ std::vector<Parameter> WarpedShadowMap::declareParameters() {
 }
 
 void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
-    maps_.render(frame);  // other lights, and every light's coloured tint
+    // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
+    maps_.render(frame, frame.camera ? frame.slots->sun : -1);
     const auto& lights = *frame.lights;
     light_ = frame.slots->sun;
     if (light_ < 0 || !frame.camera) return;

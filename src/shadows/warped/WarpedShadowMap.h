@@ -8,8 +8,8 @@ namespace penumbra::shadows {
 
 // View-dependent shadow maps for the first shadowed directional light: LiSPSM or PSM
 // (WarpFit.h), over the whole view or per tile of a cols x rows grid over the screen, each tile's
-// sub-frustum with its own warped map (Plachý 2012 §3.5, its -cw/-ch). All tiles render in one
-// layered pass. Other lights, and every light's coloured tint, use the shared per-light maps.
+// sub-frustum with its own warped map (Plachý 2012 §3.5, its -cw/-ch), each tile a layer of one
+// LayeredDepthMap. Other lights, and every light's coloured tint, use the shared per-light maps.
 class WarpedShadowMap final : public ShadowTechnique {
 public:
     enum class Warp { Lispsm, Psm };

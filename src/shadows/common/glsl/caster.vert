@@ -6,10 +6,16 @@ layout(location = 2) in vec2 aUv;
 
 uniform mat4 uModel;
 uniform mat4 uLightViewProj;
+// World half-space kept when GL_CLIP_DISTANCE0 is on (dot(plane, P) >= 0): warped maps (PSM,
+// LiSPSM) must not see geometry behind their projection centre, which would wrap around through
+// infinity. Ignored while the clip distance is disabled.
+uniform vec4 uClipPlane = vec4(0.0, 0.0, 0.0, 1.0);
 
 out vec2 vUv;
 
 void main() {
     vUv = aUv;
-    gl_Position = uLightViewProj * uModel * vec4(aPosition, 1.0);
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    gl_ClipDistance[0] = dot(uClipPlane, world);
+    gl_Position = uLightViewProj * world;
 }

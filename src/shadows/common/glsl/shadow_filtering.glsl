@@ -27,7 +27,7 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     LightData L = uLights[light];
     ShadowSite s;
     s.light = light;
-    s.slot = int(L.cone.w);
+    s.slot = lightShadowSlot(light);
     s.cube = lightType(light) == kLightPoint;
     ShadowCoord sc = shadowCoord(L, P, N, NdotL);
     s.inside = sc.inside && s.slot >= 0;

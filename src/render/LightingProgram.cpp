@@ -1,0 +1,28 @@
+#include "render/LightingProgram.h"
+
+namespace penumbra::render {
+
+std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block) {
+    std::string types, shadowSlots, projectorSlots;
+    for (int i = 0; i < gpu::kMaxLights; ++i) {
+        const gpu::LightData& l = block.lights[i];
+        const bool used = i < block.count.x;
+        const char* comma = i ? ", " : "";
+        types += comma + std::to_string(used ? static_cast<int>(l.colorType.w) : -1);
+        shadowSlots += comma + std::to_string(used ? static_cast<int>(l.cone.w) : -1);
+        projectorSlots += comma + std::to_string(used ? static_cast<int>(l.cone.z) : -1);
+    }
+    std::string eachLight;
+    for (int i = 0; i < block.count.x; ++i) eachLight += " SHADE_LIGHT(" + std::to_string(i) + ")";
+    return {"SCENE_LIGHT_COUNT " + std::to_string(block.count.x), "SHADE_EACH_LIGHT" + eachLight, "SCENE_LIGHT_TYPES " + types,
+            "SCENE_SHADOW_SLOTS " + shadowSlots, "SCENE_PROJECTOR_SLOTS " + projectorSlots};
+}
+
+gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines) {
+    return gl::Program::build({.vertex = "shaders/passes/lighting.vert",
+                               .fragment = "shaders/passes/lighting.frag",
+                               .defines = defines,
+                               .includeOverrides = {{"shadow_lookup.glsl", lookup}}});
+}
+
+}  // namespace penumbra::render

@@ -1,0 +1,25 @@
+#pragma once
+// The lighting program (shaders/passes/lighting.frag with a technique's lookup), specialised to
+// the scene's light layout: each light's type, shadow slot and projector slot become
+// compile-time constants, so the shader's light loop unrolls and every lookup addresses one
+// sampler instead of switching over all of them per pixel.
+#include "gl/Program.h"
+#include "gpu/ShaderContract.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace penumbra::render {
+
+// SCENE_LIGHT_COUNT, SHADE_EACH_LIGHT (the unrolled light loop: SHADE_LIGHT(0) SHADE_LIGHT(1) ..),
+// SCENE_LIGHT_TYPES, SCENE_SHADOW_SLOTS and SCENE_PROJECTOR_SLOTS read from a
+// packed light block (so they cannot disagree with what the block holds). Equal defines = the
+// same program.
+std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block);
+
+// lighting.vert + lighting.frag with `lookup` as "shadow_lookup.glsl" and `defines` (a light
+// layout, a transparency variant).
+gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
+
+}  // namespace penumbra::render
