@@ -23,7 +23,8 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
     std::vector<Parameter> p{
         Parameter::integer("blur_radius", blurRadius_, 0, 16, "separable Gaussian pre-filter radius in texels (sigma = radius / 2)"),
         Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit"),
-        Parameter::flag("mipmaps", mipmaps_, "mipmaps + 16x anisotropic filtering of the moments"),
+        Parameter::flag("mipmaps", mipmaps_, "trilinear mipmaps of the moments"),
+        Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
         Parameter::flag("msaa", msaa_, "moments averaged over a 4x multisampled depth map")};
     if (warp_ == Warp::Variance || warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) {
         p.push_back(Parameter::real("min_variance", minVariance_, 0.0f, 1e-2f, "variance floor against acne"));
@@ -73,7 +74,6 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
         m.moments = gl::Texture::create2D(m.format, res, res, levels);
     }
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
-    if (levels > 1) glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, 16.0f);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
     m.scratch = gl::Texture::create2D(m.format, res, res);
     m.scratchTarget.attach(GL_COLOR_ATTACHMENT0, m.scratch);
@@ -143,7 +143,10 @@ void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
     }
-    if (m.levels > 1) glGenerateTextureMipmap(m.moments.id());
+    if (m.levels > 1) {
+        glGenerateTextureMipmap(m.moments.id());
+        glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, static_cast<float>(anisotropy_));
+    }
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {

@@ -1,5 +1,8 @@
 #version 450 core
 // One direction of a separable Gaussian (sigma = radius / 2): O(n) per texel instead of O(n^2).
+// An exp() per tap, measured on llvmpipe (default scene, vsm, radius 2; shadow pass): 172 ms,
+// against 186-190 ms with the incremental Gaussian (GPU Gems 3 ch. 40) and 423 ms with weights
+// from a uniform array indexed by the loop counter (a per-lane gather). The fetches dominate.
 in vec2 vUv;
 layout(binding = 0) uniform sampler2D uSource;
 uniform ivec2 uDirection;
