@@ -18,3 +18,6 @@ int lightType(int i) { return int(uLights[i].colorType.w); }
 int lightShadowSlot(int i) { return int(uLights[i].cone.w); }
 int lightProjectorSlot(int i) { return int(uLights[i].cone.z); }
 #endif
+// Directional lights have orthographic maps; spot, projector and point lights perspective ones
+// (shadows/LightSpace.cpp). A constant in a specialised program.
+bool lightPerspective(int i) { return lightType(i) != kLightDirectional; }

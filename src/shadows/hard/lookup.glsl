@@ -6,10 +6,9 @@
 vec3 tintBehind(vec4 tint, float depth) { return depth > tint.a ? tint.rgb : vec3(1.0); }
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
-    LightData L = uLights[light];
     int slot = lightShadowSlot(light);
     if (slot < 0) return vec3(1.0);
-    ShadowCoord sc = shadowCoord(L, P, N, NdotL);
+    ShadowCoord sc = shadowCoord(light, P, N, NdotL);
     if (!sc.inside) return vec3(1.0);
     if (lightType(light) == kLightPoint)
         return shadowCompareCube(slot, sc.uv, sc.depth) * tintBehind(shadowTintCube(slot, sc.uv), sc.depth);

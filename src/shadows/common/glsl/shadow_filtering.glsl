@@ -29,11 +29,11 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     s.light = light;
     s.slot = lightShadowSlot(light);
     s.cube = lightType(light) == kLightPoint;
-    ShadowCoord sc = shadowCoord(L, P, N, NdotL);
+    ShadowCoord sc = shadowCoord(light, P, N, NdotL);
     s.inside = sc.inside && s.slot >= 0;
     s.coord = s.cube ? sc.uv : vec3(sc.uv.xy, sc.depth);
     s.depth = sc.depth;
-    s.texelWorld = shadowTexelWorldSize(L, P);
+    s.texelWorld = shadowTexelWorldSize(light, P);
     float res = L.misc.y;
     s.resolution = res;
     vec3 dir = normalize(sc.uv);
@@ -54,7 +54,7 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     s.planeNormal = N;
     s.near = L.positionNear.w;
     s.far = L.directionFar.w;
-    s.depthBias = s.cube ? perspectiveWindowDepth(lightViewDepth(L, L.positionNear.xyz + sc.uv), s.near, s.far) - sc.depth : 0.0;
+    s.depthBias = s.cube ? perspectiveWindowDepth(lightViewDepth(light, L.positionNear.xyz + sc.uv), s.near, s.far) - sc.depth : 0.0;
     return s;
 }
 
@@ -118,7 +118,7 @@ vec3 tintAt(ShadowSite s) {
 // Linear depth in [0, 1] between the light's near and far planes, from window depth.
 float linearShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
-    if (L.misc.x < 0.5) return windowDepth;
+    if (!lightPerspective(light)) return windowDepth;
     return perspectiveLinearDepth(windowDepth, L.positionNear.w, L.directionFar.w);
 }
 
@@ -126,6 +126,6 @@ float linearShadowDepth(int light, float windowDepth) {
 float worldShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
     float n = L.positionNear.w, f = L.directionFar.w;
-    if (L.misc.x < 0.5) return n + windowDepth * (f - n);
+    if (!lightPerspective(light)) return n + windowDepth * (f - n);
     return perspectiveViewDepth(windowDepth, n, f);
 }
