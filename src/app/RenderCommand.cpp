@@ -4,7 +4,9 @@
 #include "gl/Debug.h"
 #include "gl/Object.h"
 #include "platform/EglContext.h"
+#include "app/RenderOptionsCli.h"
 #include "render/Offscreen.h"
+#include "render/SplitView.h"
 #include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
 #include "util/Log.h"
@@ -63,7 +65,20 @@ BatchResult renderBatch(const BatchJob& job) {
 
     render::RenderOptions options = job.render;
     options.strictParameters = true;
-    render::Renderer renderer(scene, options);
+    // One renderer, or two side by side; `renderer` is the only or the left one (stats, soak).
+    std::unique_ptr<render::Renderer> single;
+    std::unique_ptr<render::SplitView> split;
+    if (job.split.empty()) {
+        single = std::make_unique<render::Renderer>(scene, options);
+    } else {
+        split = std::make_unique<render::SplitView>(scene, options, splitSideOptions(options, job.split));
+        split->setDivider(job.splitAt);
+    }
+    render::Renderer& renderer = split ? split->left() : *single;
+    const auto draw = [&](float t, int w, int h, GLuint fb) {
+        if (split) split->render(t, scene.cameraAt(t), w, h, fb);
+        else renderer.render(t, scene.cameraAt(t), w, h, fb);
+    };
     auto target = std::make_unique<render::OffscreenTarget>(job.width, job.height);
     int width = job.width, height = job.height;
     const auto& registry = shadows::techniqueRegistry();
@@ -73,7 +88,7 @@ BatchResult renderBatch(const BatchJob& job) {
 
     // One untimed warm-up frame: llvmpipe compiles shaders at first draw, and its first timer
     // query of a context reads garbage.
-    renderer.render(job.startTime, scene.cameraAt(job.startTime), job.width, job.height, target->framebuffer());
+    draw(job.startTime, job.width, job.height, target->framebuffer());
 
     BatchResult result;
     auto sample = [&](int frame) {
@@ -90,6 +105,7 @@ BatchResult renderBatch(const BatchJob& job) {
         if (job.cycleTechniquesEvery > 0 && i > 0 && i % job.cycleTechniquesEvery == 0) {
             techniqueIndex = (techniqueIndex + 1) % registry.size();
             renderer.setTechnique(registry[techniqueIndex].name);
+            if (split) split->right().setTechnique(registry[(techniqueIndex + 1) % registry.size()].name);
             changed = true;
         }
         if (job.cycleSizesEvery > 0 && i > 0 && i % job.cycleSizesEvery == 0) {
@@ -97,13 +113,14 @@ BatchResult renderBatch(const BatchJob& job) {
             width = s.width;
             height = s.height;
             renderer.options().shadowResolution = s.shadowResolution;
+            if (split) split->right().options().shadowResolution = s.shadowResolution;
             target = std::make_unique<render::OffscreenTarget>(width, height);
             changed = true;
         }
         if (changed) sample(i);
         const float t = job.startTime + static_cast<float>(i) / job.fps;
         const auto cpuStart = std::chrono::steady_clock::now();
-        renderer.render(t, scene.cameraAt(t), width, height, target->framebuffer());  // along camera_path, if any
+        draw(t, width, height, target->framebuffer());  // along camera_path, if any
         const bool png = job.pngEvery > 0 && i % job.pngEvery == 0;
         const std::vector<std::uint8_t> pixels = png ? target->readRgba8() : std::vector<std::uint8_t>{};
         const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
@@ -161,6 +178,9 @@ BatchResult renderBatch(const BatchJob& job) {
                      {"total", result.mean.totalMs()}}},
         {"frames", frames},
     };
+    if (split)
+        stats["split"] = {{"left", split->left().technique().name()}, {"right", split->right().technique().name()},
+                          {"divider_column", split->dividerColumn(job.width)}};
     if (soaking) {
         nlohmann::json soak = nlohmann::json::array();
         for (const SoakSample& s : result.soak)

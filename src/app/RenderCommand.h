@@ -23,6 +23,10 @@ struct BatchJob {
     int cycleTechniquesEvery = 0;
     int cycleSizesEvery = 0;
     int pngEvery = 1;
+    // Split view (issue 13): "TECHNIQUE[:name=value,...]" renders the columns right of the divider
+    // with that technique and parameters, the left ones with `render`; "" = no split.
+    std::string split;
+    float splitAt = 0.5f;  // share of the width left of the divider
 };
 
 // One row of the soak record, taken at every technique or size change and at the end.

@@ -44,6 +44,27 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     command.add_option("--peel-layers", options.peelLayers, "layers kept by (dual) depth peeling (default 4)")->check(CLI::Range(1, 32));
 }
 
+render::RenderOptions splitSideOptions(const render::RenderOptions& left, const std::string& spec) {
+    render::RenderOptions right = left;
+    const std::size_t colon = spec.find(':');
+    right.technique = spec.substr(0, colon);
+    if (!shadows::isKnownTechnique(right.technique))
+        throw std::invalid_argument("--split: unknown shadow technique '" + right.technique + "'; known: " + shadows::knownTechniqueNames());
+    right.parameters.clear();
+    if (colon == std::string::npos) return right;
+    std::size_t start = colon + 1;
+    while (start <= spec.size()) {
+        const std::size_t comma = std::min(spec.find(',', start), spec.size());
+        try {
+            right.parameters.push_back(shadows::parseParameter(spec.substr(start, comma - start)));
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("--split: ") + e.what());
+        }
+        start = comma + 1;
+    }
+    return right;
+}
+
 void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize) {
     command.add_option("scene", scene, "scene file (.json) or model file; default: the built-in scene");
     addSize(command, width, height, defaultSize);

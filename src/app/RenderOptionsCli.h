@@ -19,6 +19,11 @@ struct RenderCli {
 // Registers --technique, --shadow-res, --param (repeatable; name=value, a choice by its label,
 // a flag by true/false), --overlay, --transparency and --peel-layers, as `which` asks.
 void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderCli which = {});
+// The options of a split view's right side: `left`'s, with the technique and parameters of
+// `spec` = "TECHNIQUE[:name=value,...]" (e.g. "pcf-poisson16", "cssm2:filter=box64"). Throws
+// std::invalid_argument naming the known techniques or the malformed parameter.
+render::RenderOptions splitSideOptions(const render::RenderOptions& left, const std::string& spec);
+
 // The positional scene and --size WxH.
 void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize);
 // --size WxH alone.

@@ -5,9 +5,11 @@
 #include "platform/EglContext.h"
 #include "platform/GlfwWindow.h"
 #include "util/OutputFiles.h"
+#include "app/RenderOptionsCli.h"
 #include "app/ShaderWatcher.h"
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
+#include "render/SplitView.h"
 #include "scene/CameraController.h"
 #include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
@@ -20,6 +22,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <memory>
 #include <cstdio>
 #include <glm/gtx/rotate_vector.hpp>
 
@@ -39,6 +43,8 @@ struct ViewerState {
     int screenshotCount = 0;
     double frameSeconds = 0.0;  // exponentially smoothed frame time
     std::string shaderError;    // the last live reload's compile error, "" when the shaders are good
+    float divider = 0.5f;       // split view: share of the width left of the divider
+    bool draggingDivider = false;
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -156,7 +162,8 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     }
     if (ImGui::CollapsingHeader("keys"))
         ImGui::TextWrapped("WASD/QE move, right-drag look, arrows move the light, 1-5 map resolution, space animation, "
-                           "o debug maps, c camera, m full screen, n FPS, h hide panel, p screenshot, Esc quit");
+                           "o debug maps, c camera, v split view (drag the divider), x swap the halves, m full screen, n FPS, "
+                           "h hide panel, p screenshot, Esc quit");
     ImGui::PopItemWidth();
     ImGui::End();
 }
@@ -184,6 +191,27 @@ static void stormDrill(GLFWwindow* win, render::Renderer& renderer, const std::v
     }
 }
 
+// The technique after `name` in the registry: what `v` puts on the right of a new split view.
+std::string nextTechnique(const std::string& name) {
+    const auto& registry = shadows::techniqueRegistry();
+    for (std::size_t i = 0; i < registry.size(); ++i)
+        if (registry[i].name == name) return registry[(i + 1) % registry.size()].name;
+    return registry.front().name;
+}
+
+// Each half of a split view named at the top, beside the divider.
+void labelSplit(const render::Renderer& left, const render::Renderer& right, float divider) {
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const float x = divider * ImGui::GetIO().DisplaySize.x, pad = 8.0f;
+    const std::string l = "< " + left.technique().name(), r = right.technique().name() + " >";
+    const ImVec2 size = ImGui::CalcTextSize(l.c_str());
+    for (const auto& [pos, text] : {std::pair{ImVec2(x - pad - size.x, pad), l}, std::pair{ImVec2(x + pad, pad), r}}) {
+        const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
+        draw->AddRectFilled(ImVec2(pos.x - 3, pos.y - 2), ImVec2(pos.x + extent.x + 3, pos.y + extent.y + 2), IM_COL32(0, 0, 0, 160));
+        draw->AddText(pos, IM_COL32(255, 255, 255, 255), text.c_str());
+    }
+}
+
 int runViewer(const ViewerOptions& opts) {
     scene::Scene scene = scene::io::loadScene(opts.scene);
     platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
@@ -191,6 +219,9 @@ int runViewer(const ViewerOptions& opts) {
     log::info("window on {}", platform::glDeviceDescription());
 
     render::Renderer renderer(scene, opts.render);
+    // Split view (render/SplitView.h): the right side's own renderer, null when off.
+    std::unique_ptr<render::Renderer> right;
+    if (!opts.split.empty()) right = std::make_unique<render::Renderer>(scene, splitSideOptions(opts.render, opts.split));
     scene::CameraController controller(scene.camera);
     if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);
     if (opts.controller == "orbit") controller.setMode(scene::Camera::Controller::Orbit);
@@ -230,6 +261,7 @@ int runViewer(const ViewerOptions& opts) {
         if (opts.resizeStorm) stormDrill(win, renderer, registry, stormStep++);
         if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
             state.shaderError = renderer.reloadShaders();
+            if (right && state.shaderError.empty()) state.shaderError = right->reloadShaders();
             if (state.shaderError.empty()) log::info("shaders reloaded");
             else log::error("{}", state.shaderError);
         }
@@ -254,6 +286,15 @@ int runViewer(const ViewerOptions& opts) {
             if (pressed(GLFW_KEY_SPACE)) state.animate = !state.animate;
             if (pressed(GLFW_KEY_O)) renderer.options().debugOverlay = !renderer.options().debugOverlay;
             if (pressed(GLFW_KEY_P) || pressed(GLFW_KEY_F12)) state.screenshotRequested = true;
+            if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right) / off
+                if (right) right.reset();
+                else right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
+            }
+            if (pressed(GLFW_KEY_X) && right) {  // swap the halves
+                const std::string leftName = renderer.technique().name(), rightName = right->technique().name();
+                renderer.setTechnique(rightName);
+                right->setTechnique(leftName);
+            }
             if (pressed(GLFW_KEY_C)) controller.setMode(static_cast<scene::Camera::Controller>((static_cast<int>(controller.mode()) + 1) % 3));
             for (int k = 0; k < 5; ++k)
                 if (pressed(GLFW_KEY_1 + k)) renderer.options().shadowResolution = kResolutionKeys[k];
@@ -269,8 +310,15 @@ int runViewer(const ViewerOptions& opts) {
         input.viewport = {static_cast<float>(w), static_cast<float>(h)};
         double x = 0, y = 0;
         glfwGetCursorPos(win, &x, &y);
-        const bool dragging = !io.WantCaptureMouse && (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                                                       glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
+        // A left press within a few pixels of the divider drags it instead of the camera.
+        const bool leftDown = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        int winW = 0, winH = 0;
+        glfwGetWindowSize(win, &winW, &winH);
+        if (!right || !leftDown) state.draggingDivider = false;
+        else if (!io.WantCaptureMouse && !state.draggingDivider && std::abs(x - state.divider * winW) < 6.0) state.draggingDivider = true;
+        if (state.draggingDivider && winW > 0) state.divider = std::clamp(static_cast<float>(x / winW), 0.0f, 1.0f);
+        const bool dragging = !io.WantCaptureMouse && !state.draggingDivider &&
+                              (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS || leftDown);
         if (dragging) input.dragPixels = {static_cast<float>(x - lastX), static_cast<float>(y - lastY)};
         lastX = x;
         lastY = y;
@@ -284,7 +332,14 @@ int runViewer(const ViewerOptions& opts) {
         controller.update(input);
 
         try {
-            renderer.render(state.time, scene.camera, w, h, 0);
+            if (right) {
+                const int column = std::clamp(static_cast<int>(state.divider * static_cast<float>(w)), 0, w);
+                renderer.render(state.time, scene.camera, w, h, 0, {0, column});
+                right->render(state.time, scene.camera, w, h, 0, {column, w});
+                render::drawDivider(0, column, w, h);
+            } else {
+                renderer.render(state.time, scene.camera, w, h, 0);
+            }
         } catch (const std::exception& e) {
             log::error("{}", e.what());
             return 1;
@@ -292,6 +347,7 @@ int runViewer(const ViewerOptions& opts) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
+        if (right) labelSplit(renderer, *right, state.divider);
         if (state.showPanel) drawPanel(renderer, state, controller);
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));

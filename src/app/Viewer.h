@@ -17,6 +17,8 @@ struct ViewerOptions {
     // 800x600 and a switch to the next technique (exitAfterFrames counts drawn frames only).
     bool resizeStorm = false;
     std::filesystem::path screenshotDir = ".";
+    // Split view: "TECHNIQUE[:name=value,...]" for the right side at start ("" = off; `v` toggles).
+    std::string split;
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

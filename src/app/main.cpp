@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     app::ViewerOptions viewer;
     app::addSceneAndSize(*view, viewer.scene, viewer.width, viewer.height, "800x600");
     app::addRenderOptions(*view, viewer.render);
+    view->add_option("--split", viewer.split, "start in split view: the right side with TECHNIQUE[:name=value,...] (v toggles, x swaps, drag the divider)");
     view->add_option("--controller", viewer.controller, "fly | trackball | orbit")->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
@@ -85,6 +86,8 @@ int main(int argc, char** argv) {
     rend->add_option("--cycle-sizes", job.cycleSizesEvery, "soak: change output size and shadow-map resolution every N frames")
         ->check(CLI::NonNegativeNumber);
     rend->add_option("--png-every", job.pngEvery, "write every Nth frame as PNG (default 1; 0: none)")->check(CLI::NonNegativeNumber);
+    rend->add_option("--split", job.split, "split view: the columns right of the divider with TECHNIQUE[:name=value,...]");
+    rend->add_option("--split-at", job.splitAt, "split view: share of the width left of the divider (default 0.5)")->check(CLI::Range(0.0f, 1.0f));
     app::addEglPlatform(*rend, job.eglPlatform);
 
     app::ReportJob report;

@@ -146,7 +146,7 @@ void Renderer::ensureTargets(int w, int h) {
     targetH_ = h;
 }
 
-void Renderer::render(float time, const scene::Camera& camera, int width, int height, GLuint target) {
+void Renderer::render(float time, const scene::Camera& camera, int width, int height, GLuint target, Columns columns) {
     if (width <= 0 || height <= 0) return;  // minimised: nothing to draw into
     ensureTargets(width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -206,6 +206,13 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         timer_.end(Pass::Shadow);
     }
 
+    // A column range scissors every camera pass, clears included, and the output.
+    const int first = std::clamp(columns.first, 0, width), last = columns.last < 0 ? width : std::clamp(columns.last, first, width);
+    const bool partial = first > 0 || last < width;
+    if (partial) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(first, 0, last - first, height);
+    }
     hdrFbo_.bind();
     glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;
@@ -242,6 +249,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         if (options_.debugOverlay) drawOverlay(target, width, height);
         timer_.end(Pass::Post);
     }
+    if (partial) glDisable(GL_SCISSOR_TEST);
     timer_.endFrame();
 }
 

@@ -26,6 +26,11 @@ namespace penumbra::render {
 // equals Ambient + sum over lights of Contribution * Visibility.
 enum class OutputMode { Shaded = 0, Visibility = 1, WorldPosition = 2, Normal = 3, Contribution = 4, Ambient = 5 };
 
+// Pixel columns [first, last) of a frame; last < 0: to the right edge.
+struct Columns {
+    int first = 0, last = -1;
+};
+
 // How a frame is rendered: the one set of options every front-end (window, render, compare,
 // bench) fills, through one CLI helper (app/RenderOptionsCli.h).
 struct RenderOptions {
@@ -72,8 +77,11 @@ public:
     shadows::ShadowTechnique& technique() { return *technique_; }
 
     // Renders the frame at `time` into `targetFramebuffer` (0: the window) of width x height.
-    // A 0x0 size (minimised window) renders nothing.
-    void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer);
+    // A 0x0 size (minimised window) renders nothing. `columns` limits the camera passes and the
+    // output to the pixel columns [first, last) of the frame (split view: render/SplitView.h);
+    // shadow maps are always whole.
+    void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer,
+                Columns columns = {});
 
     // GPU times per pass come from a ring of timer queries, a few frames late (render/FrameTimer.h).
     // The newest finished frame's, without waiting:

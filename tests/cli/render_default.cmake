@@ -17,3 +17,20 @@ endif()
 if(NOT out MATCHES "shadow [0-9.]+ \\| opaque")
   message(FATAL_ERROR "per-pass timings were not printed")
 endif()
+
+# Split view from the command line: the right side's technique and parameters reach a renderer of
+# their own (the pixels themselves are SplitViewTest's), and a bad side is named.
+run_penumbra("${OUT}" split "${PENUMBRA}" render --size 64x48 --frames 1 --split "cssm2:filter=box64" --split-at 0.25
+             --out "${OUT}/split")
+file(READ "${OUT}/split/stats.json" stats)
+string(JSON left GET "${stats}" split left)
+string(JSON right GET "${stats}" split right)
+string(JSON column GET "${stats}" split divider_column)
+if(NOT left STREQUAL "hard" OR NOT right STREQUAL "cssm2" OR NOT column EQUAL 16)
+  message(FATAL_ERROR "split view: left=${left} right=${right} divider=${column}, expected hard, cssm2, 16")
+endif()
+execute_process(COMMAND "${PENUMBRA}" render --size 64x48 --frames 1 --split nope --out "${OUT}/split_bad"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "--split: unknown shadow technique 'nope'; known: hard")
+  message(FATAL_ERROR "a bad --split side must fail with a message naming it: rc=${rc} ${err}")
+endif()
