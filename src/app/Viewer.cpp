@@ -10,6 +10,8 @@
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
 #include "render/SplitView.h"
+#include "reference/BackgroundReference.h"
+#include "gl/Texture.h"
 #include "scene/CameraController.h"
 #include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
@@ -44,6 +46,13 @@ struct ViewerState {
     double frameSeconds = 0.0;  // exponentially smoothed frame time
     std::string shaderError;    // the last live reload's compile error, "" when the shaders are good
     float divider = 0.5f;       // split view: share of the width left of the divider
+    // Reference mode (r): the ray-traced frame of the view when r was pressed, traced in the
+    // background; g toggles the heat map |technique - reference|. Moving the camera, resizing or
+    // pressing r again leaves it.
+    std::unique_ptr<reference::BackgroundReference> reference;
+    gl::Texture referenceImage, heatImage;
+    bool showHeat = false;
+    bool referenceStarted = false;  // --reference has opened reference mode once
     bool draggingDivider = false;
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
@@ -162,7 +171,8 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     }
     if (ImGui::CollapsingHeader("keys"))
         ImGui::TextWrapped("WASD/QE move, right-drag look, arrows move the light, 1-5 map resolution, space animation, "
-                           "o debug maps, c camera, v split view (drag the divider), x swap the halves, m full screen, n FPS, "
+                           "o debug maps, c camera, v split view (drag the divider), x swap the halves, r reference of this view, "
+                           "g its heat map, m full screen, n FPS, "
                            "h hide panel, p screenshot, Esc quit");
     ImGui::PopItemWidth();
     ImGui::End();
@@ -189,6 +199,52 @@ static void stormDrill(GLFWwindow* win, render::Renderer& renderer, const std::v
         case 4: glfwSetWindowSize(win, 800, 600); break;
         default: renderer.setTechnique(registry[static_cast<std::size_t>(step / 6) % registry.size()].name); break;
     }
+}
+
+constexpr int kReferenceSamples = 16;  // per pixel, for area lights
+
+void leaveReference(ViewerState& state) {
+    state.reference.reset();  // waits for a tracer still running
+    state.referenceImage = gl::Texture();
+    state.heatImage = gl::Texture();
+    state.showHeat = false;
+}
+
+gl::Texture imageTexture(const std::vector<std::uint8_t>& rgba, int w, int h) {
+    gl::Texture t = gl::Texture::create2D(GL_RGBA8, w, h);
+    glTextureSubImage2D(t.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    return t;
+}
+
+// Reference mode over the frame: a progress bar while tracing, then the reference (or the
+// heat map of the left/only technique against it) over the whole window, labelled.
+void drawReference(ViewerState& state, render::Renderer& renderer) {
+    reference::BackgroundReference& ref = *state.reference;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, 8.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::Begin("reference", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+    if (!ref.ready()) {
+        ImGui::Text("ray-tracing the reference of this frame (Embree, %d samples)", kReferenceSamples);
+        ImGui::ProgressBar(static_cast<float>(ref.progress()), ImVec2(320.0f, 0.0f));
+        ImGui::End();
+        return;
+    }
+    try {
+        if (state.referenceImage.id() == 0) state.referenceImage = imageTexture(ref.image(), ref.width(), ref.height());
+        if (state.showHeat && state.heatImage.id() == 0)
+            state.heatImage = imageTexture(ref.heatMap(renderer.technique().name()), ref.width(), ref.height());
+    } catch (const std::exception& e) {
+        log::error("{}", e.what());
+        ImGui::End();
+        leaveReference(state);
+        return;
+    }
+    const gl::Texture& shown = state.showHeat ? state.heatImage : state.referenceImage;
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(shown.id())), ImVec2(0, 0), size);
+    if (state.showHeat) ImGui::Text("|%s - reference| (g: reference, r: leave)", renderer.technique().name().c_str());
+    else ImGui::Text("ray-traced reference (g: heat map, r: leave)");
+    ImGui::End();
 }
 
 // The technique after `name` in the registry: what `v` puts on the right of a new split view.
@@ -286,6 +342,17 @@ int runViewer(const ViewerOptions& opts) {
             if (pressed(GLFW_KEY_SPACE)) state.animate = !state.animate;
             if (pressed(GLFW_KEY_O)) renderer.options().debugOverlay = !renderer.options().debugOverlay;
             if (pressed(GLFW_KEY_P) || pressed(GLFW_KEY_F12)) state.screenshotRequested = true;
+            const bool startReference = opts.referenceMode && !state.referenceStarted;
+            state.referenceStarted = true;
+            if (pressed(GLFW_KEY_R) || startReference) {
+                state.showHeat = startReference && opts.heatMap;
+                if (state.reference) leaveReference(state);
+                else {
+                    state.reference = std::make_unique<reference::BackgroundReference>(scene, w, h, state.time, kReferenceSamples);
+                    state.animate = false;  // the reference is of this frozen frame
+                }
+            }
+            if (pressed(GLFW_KEY_G) && state.reference) state.showHeat = !state.showHeat;
             if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right) / off
                 if (right) right.reset();
                 else right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
@@ -329,6 +396,9 @@ int runViewer(const ViewerOptions& opts) {
             input.fast = glfwGetKey(win, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
         }
         input.scroll = io.WantCaptureMouse ? 0.0f : io.MouseWheel;
+        if (state.reference && (input.dragPixels != glm::vec2(0.0f) || input.move != glm::vec3(0.0f) || input.scroll != 0.0f ||
+                                w != state.reference->width() || h != state.reference->height()))
+            leaveReference(state);  // the view moved away from the frozen frame
         controller.update(input);
 
         try {
@@ -348,6 +418,7 @@ int runViewer(const ViewerOptions& opts) {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         if (right) labelSplit(renderer, *right, state.divider);
+        if (state.reference) drawReference(state, renderer);
         if (state.showPanel) drawPanel(renderer, state, controller);
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
@@ -358,7 +429,8 @@ int runViewer(const ViewerOptions& opts) {
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         // Scripted runs (--exit-after) leave a screenshot of their last frame as proof.
-        const bool lastFrame = opts.exitAfterFrames > 0 && ++frame >= opts.exitAfterFrames;
+        const bool referencePending = state.reference && !state.referenceImage.id();
+        const bool lastFrame = opts.exitAfterFrames > 0 && ++frame >= opts.exitAfterFrames && !referencePending;
         if (state.screenshotRequested || lastFrame) {
             saveScreenshot(opts, state, w, h);  // before the swap: the back buffer is still ours
             state.screenshotRequested = false;

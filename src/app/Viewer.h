@@ -19,6 +19,9 @@ struct ViewerOptions {
     std::filesystem::path screenshotDir = ".";
     // Split view: "TECHNIQUE[:name=value,...]" for the right side at start ("" = off; `v` toggles).
     std::string split;
+    // Start in reference mode (as if r were pressed on the first frame), with the heat map (g)
+    // when `heatMap`; --exit-after then counts its last frame only once the reference is ready.
+    bool referenceMode = false, heatMap = false;
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

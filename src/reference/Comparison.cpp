@@ -45,12 +45,17 @@ Comparison::Comparison(scene::Scene& scene, int width, int height, float time)
     }
 }
 
-void Comparison::traceReference(int samples, bool showProgress) {
+void Comparison::traceReference(int samples, bool showProgress, const Progress& onProgress) {
     const auto start = std::chrono::steady_clock::now();
     const RayScene rays(scene_, time_);
     reference_.clear();
     for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
-        const Progress progress = showProgress ? consoleProgress("reference: " + scene_.lights[l].name) : Progress{};
+        const Progress console = showProgress ? consoleProgress("reference: " + scene_.lights[l].name) : Progress{};
+        const double lights = static_cast<double>(scene_.lights.size());
+        const Progress progress = [&, l](double fraction) {
+            if (console) console(fraction);
+            if (onProgress) onProgress((static_cast<double>(l) + fraction) / lights);
+        };
         reference_.push_back(traceVisibility(rays, scene_.lights[l], points_, samples, progress));
     }
     referenceSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

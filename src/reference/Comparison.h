@@ -32,8 +32,10 @@ public:
     // Throws InputError when the scene has no lights.
     Comparison(scene::Scene& scene, int width, int height, float time);
 
-    // Ray-traces every light's visibility (samples per pixel for area lights).
-    void traceReference(int samples, bool showProgress);
+    // Ray-traces every light's visibility (samples per pixel for area lights). `onProgress`, if
+    // set, hears the share done over all lights (0..1) from a worker thread now and then. No GL:
+    // it may run on another thread (BackgroundReference.h).
+    void traceReference(int samples, bool showProgress, const Progress& onProgress = {});
     double referenceSeconds() const { return referenceSeconds_; }
 
     // Renders `technique`'s visibility for every light and scores it against the reference;
