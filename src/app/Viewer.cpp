@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <cstdio>
 #include <glm/gtx/rotate_vector.hpp>
 
@@ -45,6 +46,8 @@ struct ViewerState {
     int screenshotCount = 0;
     double frameSeconds = 0.0;  // exponentially smoothed frame time
     std::string shaderError;    // the last live reload's compile error, "" when the shaders are good
+    std::vector<std::filesystem::path> dropped;  // files dropped on the window, not yet loaded
+    std::string loadError;      // the last dropped file's error, "" once one loads
     float divider = 0.5f;       // split view: share of the width left of the divider
     // Reference mode (r): the ray-traced frame of the view when r was pressed, traced in the
     // background; g toggles the heat map |technique - reference|. Moving the camera, resizing or
@@ -106,6 +109,11 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     ImGui::Text("%.1f FPS, GPU %.1f ms", state.fps(), t.totalMs());
     ImGui::Text("shadow %.1f | opaque %.1f ms", t.shadowMs, t.opaqueMs);
     ImGui::Text("shadow memory %.1f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
+    if (!state.loadError.empty()) {  // a dropped file that did not load: the old scene keeps drawing
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("could not load the dropped file (the previous scene stays):\n%s", state.loadError.c_str());
+        ImGui::PopStyleColor();
+    }
     if (!state.shaderError.empty()) {  // live editing: the last good programs keep drawing
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("shader error (last good shaders drawing):\n%s", state.shaderError.c_str());
@@ -269,19 +277,21 @@ void labelSplit(const render::Renderer& left, const render::Renderer& right, flo
 }
 
 int runViewer(const ViewerOptions& opts) {
-    scene::Scene scene = scene::io::loadScene(opts.scene);
+    // Scene, renderer and camera controller are replaced whole when a file is dropped on the
+    // window (seed 001's way of opening a scene); each frame works on the current ones.
+    auto scenePtr = std::make_unique<scene::Scene>(scene::io::loadScene(opts.scene));
     platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
     if (opts.debugContext) gl::enableDebugOutput();
     log::info("window on {}", platform::glDeviceDescription());
 
-    render::Renderer renderer(scene, opts.render);
+    auto rendererPtr = std::make_unique<render::Renderer>(*scenePtr, opts.render);
     // Split view (render/SplitView.h): the right side's own renderer, null when off.
     std::unique_ptr<render::Renderer> right;
-    if (!opts.split.empty()) right = std::make_unique<render::Renderer>(scene, splitSideOptions(opts.render, opts.split));
-    scene::CameraController controller(scene.camera);
-    if (opts.controller == "trackball") controller.setMode(scene::Camera::Controller::Trackball);
-    if (opts.controller == "orbit") controller.setMode(scene::Camera::Controller::Orbit);
-    const glm::vec3 pivot = scene.boundsAt(0.0f).center();
+    if (!opts.split.empty()) right = std::make_unique<render::Renderer>(*scenePtr, splitSideOptions(opts.render, opts.split));
+    auto controllerPtr = std::make_unique<scene::CameraController>(scenePtr->camera);
+    if (opts.controller == "trackball") controllerPtr->setMode(scene::Camera::Controller::Trackball);
+    if (opts.controller == "orbit") controllerPtr->setMode(scene::Camera::Controller::Orbit);
+    glm::vec3 pivot = scenePtr->boundsAt(0.0f).center();
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -297,6 +307,11 @@ int runViewer(const ViewerOptions& opts) {
     ViewerState state;
     GLFWwindow* win = window.handle();
     glfwSetWindowUserPointer(win, &state);
+    glfwSetDropCallback(win, [](GLFWwindow* w, int count, const char** paths) {
+        auto* s = static_cast<ViewerState*>(glfwGetWindowUserPointer(w));
+        if (count > 0) s->dropped.emplace_back(paths[count - 1]);  // several at once: the last one
+    });
+    state.dropped = opts.drop;
     auto previous = std::chrono::steady_clock::now();
     double lastX = 0, lastY = 0;
     glfwGetCursorPos(win, &lastX, &lastY);
@@ -314,6 +329,33 @@ int runViewer(const ViewerOptions& opts) {
     const auto& registry = shadows::techniqueRegistry();
     while (!window.shouldClose()) {
         glfwPollEvents();
+        for (const auto& file : std::exchange(state.dropped, {})) {
+            // Load and build everything first: a broken file changes nothing but the message.
+            try {
+                auto next = std::make_unique<scene::Scene>(scene::io::loadScene(file));
+                render::RenderOptions options = rendererPtr->options();
+                auto nextRenderer = std::make_unique<render::Renderer>(*next, options);
+                std::unique_ptr<render::Renderer> nextRight;
+                if (right) nextRight = std::make_unique<render::Renderer>(*next, right->options());
+                if (state.reference) leaveReference(state);
+                controllerPtr = std::make_unique<scene::CameraController>(next->camera);
+                rendererPtr = std::move(nextRenderer);
+                right = std::move(nextRight);
+                scenePtr = std::move(next);
+                pivot = scenePtr->boundsAt(0.0f).center();
+                state.time = 0.0f;
+                state.selectedLight = 0;
+                state.loadError.clear();
+                glfwSetWindowTitle(win, ("penumbra - " + file.filename().string()).c_str());
+                log::info("loaded {}", file.string());
+            } catch (const std::exception& e) {
+                state.loadError = e.what();
+                log::error("{}", e.what());
+            }
+        }
+        scene::Scene& scene = *scenePtr;
+        render::Renderer& renderer = *rendererPtr;
+        scene::CameraController& controller = *controllerPtr;
         if (opts.resizeStorm) stormDrill(win, renderer, registry, stormStep++);
         if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
             state.shaderError = renderer.reloadShaders();

@@ -2,6 +2,7 @@
 #include "render/Renderer.h"
 
 #include <filesystem>
+#include <vector>
 #include <string>
 
 namespace penumbra::app {
@@ -22,6 +23,8 @@ struct ViewerOptions {
     // Start in reference mode (as if r were pressed on the first frame), with the heat map (g)
     // when `heatMap`; --exit-after then counts its last frame only once the reference is ready.
     bool referenceMode = false, heatMap = false;
+    // Scripted drops: these files arrive on the first frame as if dropped on the window.
+    std::vector<std::filesystem::path> drop;
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
     view->add_option("--split", viewer.split, "start in split view: the right side with TECHNIQUE[:name=value,...] (v toggles, x swaps, drag the divider)");
     view->add_flag("--reference", viewer.referenceMode, "start in reference mode: the ray-traced frame, traced in the background (r)");
     view->add_flag("--heat-map", viewer.heatMap, "with --reference: show |technique - reference| (g)");
+    view->add_option("--drop", viewer.drop, "scripted: deliver FILE on the first frame as if dropped on the window");
     view->add_option("--controller", viewer.controller, "fly | trackball | orbit")->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
