@@ -1,7 +1,7 @@
 # Shared by the CLI test scripts.
 
 # Runs penumbra with ARGN in `dir` (created empty), prints its output, fails on a non-zero exit;
-# its stdout lands in `out_var`.
+# its stdout lands in `out_var`, stdout and stderr together in `<out_var>_and_errors`.
 function(run_penumbra dir out_var)
   file(REMOVE_RECURSE "${dir}")
   file(MAKE_DIRECTORY "${dir}")
@@ -11,6 +11,7 @@ function(run_penumbra dir out_var)
     message(FATAL_ERROR "penumbra exited with ${rc}")
   endif()
   set(${out_var} "${out}" PARENT_SCOPE)
+  set(${out_var}_and_errors "${out}${err}" PARENT_SCOPE)  # stdout, then stderr (log lines)
 endfunction()
 
 # Fails naming the first of ARGN (paths relative to `dir`) that does not exist.

@@ -2,18 +2,12 @@
 # the file through the window's drop handler on the first frame. A broken scene must leave the
 # old scene drawing (the run goes on to its screenshot and exits 0) with the error named; a model
 # must load.
+include(${CMAKE_CURRENT_LIST_DIR}/helpers.cmake)
 find_program(XVFB_RUN xvfb-run REQUIRED)
-# Runs the window in `dir` with ARGN, stdout and stderr together in `log`; it must exit 0.
+# Runs the window in `dir` with ARGN; `log` gets stdout and stderr together.
 function(view_with dir log)
-  file(REMOVE_RECURSE "${dir}")
-  file(MAKE_DIRECTORY "${dir}")
-  execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1024x768x24" "${PENUMBRA}" view ${ARGN} --exit-after 2
-                  WORKING_DIRECTORY "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  message("${out}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "the window exited with ${rc}")
-  endif()
-  set(${log} "${out}" PARENT_SCOPE)
+  run_penumbra("${dir}" out ${XVFB_RUN} -a -s "-screen 0 1024x768x24" "${PENUMBRA}" view ${ARGN} --exit-after 2)
+  set(${log} "${out_and_errors}" PARENT_SCOPE)
 endfunction()
 view_with("${OUT}/broken" out --drop "${DATA}/malformed.json")
 if(NOT out MATCHES "malformed.json:[0-9]+")
