@@ -55,8 +55,8 @@ struct ViewerState {
     std::unique_ptr<reference::BackgroundReference> reference;
     gl::Texture referenceImage, heatImage;
     bool showHeat = false;
-    bool referenceStarted = false;  // --reference has opened reference mode once
     bool draggingDivider = false;
+    bool swapSides = false;  // x: the split view's renderers change places
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -211,6 +211,12 @@ static void stormDrill(GLFWwindow* win, render::Renderer& renderer, const std::v
 
 constexpr int kReferenceSamples = 16;  // per pixel, for area lights
 
+// Starts tracing the reference of the frame now on screen, and freezes the animation on it.
+void enterReference(ViewerState& state, const scene::Scene& scene, int w, int h) {
+    state.reference = std::make_unique<reference::BackgroundReference>(scene, w, h, state.time, kReferenceSamples);
+    state.animate = false;
+}
+
 void leaveReference(ViewerState& state) {
     state.reference.reset();  // waits for a tracer still running
     state.referenceImage = gl::Texture();
@@ -312,6 +318,12 @@ int runViewer(const ViewerOptions& opts) {
         if (count > 0) s->dropped.emplace_back(paths[count - 1]);  // several at once: the last one
     });
     state.dropped = opts.drop;
+    if (opts.referenceMode) {  // as if r were pressed on the first frame
+        int w = 0, h = 0;
+        window.framebufferSize(w, h);
+        if (w > 0 && h > 0) enterReference(state, *scenePtr, w, h);
+        state.showHeat = opts.heatMap;
+    }
     auto previous = std::chrono::steady_clock::now();
     double lastX = 0, lastY = 0;
     glfwGetCursorPos(win, &lastX, &lastY);
@@ -353,6 +365,7 @@ int runViewer(const ViewerOptions& opts) {
                 log::error("{}", e.what());
             }
         }
+        if (std::exchange(state.swapSides, false) && right) std::swap(rendererPtr, right);  // with their parameters
         scene::Scene& scene = *scenePtr;
         render::Renderer& renderer = *rendererPtr;
         scene::CameraController& controller = *controllerPtr;
@@ -384,26 +397,16 @@ int runViewer(const ViewerOptions& opts) {
             if (pressed(GLFW_KEY_SPACE)) state.animate = !state.animate;
             if (pressed(GLFW_KEY_O)) renderer.options().debugOverlay = !renderer.options().debugOverlay;
             if (pressed(GLFW_KEY_P) || pressed(GLFW_KEY_F12)) state.screenshotRequested = true;
-            const bool startReference = opts.referenceMode && !state.referenceStarted;
-            state.referenceStarted = true;
-            if (pressed(GLFW_KEY_R) || startReference) {
-                state.showHeat = startReference && opts.heatMap;
+            if (pressed(GLFW_KEY_R)) {
                 if (state.reference) leaveReference(state);
-                else {
-                    state.reference = std::make_unique<reference::BackgroundReference>(scene, w, h, state.time, kReferenceSamples);
-                    state.animate = false;  // the reference is of this frozen frame
-                }
+                else enterReference(state, scene, w, h);
             }
             if (pressed(GLFW_KEY_G) && state.reference) state.showHeat = !state.showHeat;
             if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right) / off
                 if (right) right.reset();
                 else right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
             }
-            if (pressed(GLFW_KEY_X) && right) {  // swap the halves
-                const std::string leftName = renderer.technique().name(), rightName = right->technique().name();
-                renderer.setTechnique(rightName);
-                right->setTechnique(leftName);
-            }
+            if (pressed(GLFW_KEY_X) && right) state.swapSides = true;  // done before the next frame binds them
             if (pressed(GLFW_KEY_C)) controller.setMode(static_cast<scene::Camera::Controller>((static_cast<int>(controller.mode()) + 1) % 3));
             for (int k = 0; k < 5; ++k)
                 if (pressed(GLFW_KEY_1 + k)) renderer.options().shadowResolution = kResolutionKeys[k];
@@ -444,14 +447,8 @@ int runViewer(const ViewerOptions& opts) {
         controller.update(input);
 
         try {
-            if (right) {
-                const int column = std::clamp(static_cast<int>(state.divider * static_cast<float>(w)), 0, w);
-                renderer.render(state.time, scene.camera, w, h, 0, {0, column});
-                right->render(state.time, scene.camera, w, h, 0, {column, w});
-                render::drawDivider(0, column, w, h);
-            } else {
-                renderer.render(state.time, scene.camera, w, h, 0);
-            }
+            if (right) render::renderSplit(renderer, *right, state.divider, state.time, scene.camera, w, h, 0);
+            else renderer.render(state.time, scene.camera, w, h, 0);
         } catch (const std::exception& e) {
             log::error("{}", e.what());
             return 1;
@@ -459,7 +456,7 @@ int runViewer(const ViewerOptions& opts) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        if (right) labelSplit(renderer, *right, state.divider);
+        if (right && !state.reference) labelSplit(renderer, *right, state.divider);  // the reference covers both halves
         if (state.reference) drawReference(state, renderer);
         if (state.showPanel) drawPanel(renderer, state, controller);
         else if (state.showFps) {

@@ -71,7 +71,7 @@ struct LightData {
     vec4 directionFar;   // xyz: direction light travels; w: shadow far plane
     vec4 cone;           // x: cos(outer half-angle); y: cos(inner); z: projector slot; w: shadow slot (-1: none)
     vec4 shadow;         // x: bias, y: slope bias, z: normal offset (all in shadow texels); w: texel scale
-    vec4 misc;           // x: 1 if perspective; y: resolution; z: light size (world units)
+    vec4 misc;           // x: unused (perspective = not directional: lightPerspective() in lights.glsl); y: resolution; z: light size (world units)
 };
 
 #ifdef __cplusplus

@@ -34,7 +34,7 @@ gpu::LightBlock packLights(const std::vector<Light>& lights, const std::vector<s
                            l.type == Light::Type::Projector && projectorSlot < gpu::kMaxProjectors ? projectorSlot++ : -1,
                            index < slots.size() ? slots.slot[index] : -1);
         g.shadow = glm::vec4(l.shadow.bias, l.shadow.slopeBias, l.shadow.normalOffset, ls.texelScale);
-        g.misc = glm::vec4(ls.perspective ? 1.0f : 0.0f, static_cast<float>(ls.resolution), l.size, 0.0f);
+        g.misc = glm::vec4(0.0f, static_cast<float>(ls.resolution), l.size, 0.0f);
     }
     return block;
 }

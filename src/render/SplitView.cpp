@@ -8,20 +8,21 @@ namespace penumbra::render {
 SplitView::SplitView(scene::Scene& scene, const RenderOptions& left, const RenderOptions& right)
     : left_(std::make_unique<Renderer>(scene, left)), right_(std::make_unique<Renderer>(scene, right)) {}
 
-int SplitView::dividerColumn(int width) const {
-    return std::clamp(static_cast<int>(std::lround(divider_ * static_cast<float>(width))), 0, width);
+int dividerColumn(float share, int width) {
+    return std::clamp(static_cast<int>(std::lround(share * static_cast<float>(width))), 0, width);
 }
 
 void SplitView::setDivider(float share) { divider_ = std::clamp(share, 0.0f, 1.0f); }
 
 void SplitView::render(float time, const scene::Camera& camera, int width, int height, GLuint target) {
-    const int column = dividerColumn(width);
-    left_->render(time, camera, width, height, target, {0, column});
-    right_->render(time, camera, width, height, target, {column, width});
-    drawDivider(target, column, width, height);
+    renderSplit(*left_, *right_, divider_, time, camera, width, height, target);
 }
 
-void drawDivider(GLuint target, int column, int width, int height) {
+void renderSplit(Renderer& left, Renderer& right, float share, float time, const scene::Camera& camera, int width, int height,
+                 GLuint target) {
+    const int column = dividerColumn(share, width);
+    left.render(time, camera, width, height, target, {0, column});
+    right.render(time, camera, width, height, target, {column, width});
     if (column <= 0 || column >= width) return;
     const float white[4] = {1, 1, 1, 1};
     glEnable(GL_SCISSOR_TEST);

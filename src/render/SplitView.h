@@ -8,8 +8,13 @@
 
 namespace penumbra::render {
 
-// Paints the divider of a split frame: the two pixel columns either side of `column`, white.
-void drawDivider(GLuint targetFramebuffer, int column, int width, int height);
+// The column of a divider at `share` (0..1) of `width`.
+int dividerColumn(float share, int width);
+// One split frame: `left` on the columns left of the divider at `share` of the width, `right` on
+// the others, and the divider painted as the white columns either side of it. SplitView and the
+// window (which owns its renderers itself) both draw through it.
+void renderSplit(Renderer& left, Renderer& right, float share, float time, const scene::Camera& camera, int width, int height,
+                 GLuint targetFramebuffer);
 
 class SplitView {
 public:
@@ -19,7 +24,7 @@ public:
     // The frame of `width` x `height` with the divider at column dividerColumn(width), drawn as
     // the white columns either side of it.
     void render(float time, const scene::Camera& camera, int width, int height, GLuint targetFramebuffer);
-    int dividerColumn(int width) const;
+    int dividerColumn(int width) const { return render::dividerColumn(divider_, width); }
     void setDivider(float share);  // share of the width left of the divider, kept within [0, 1]
     float divider() const { return divider_; }
     void swap() { std::swap(left_, right_); }  // the key that swaps the halves
