@@ -10,10 +10,13 @@ uniform vec3 uBackground;
 uniform vec2 uFog;        // start, end distances from the camera
 uniform int uFogEnabled;
 uniform int uEncodeSrgb;  // 0: pass linear values through (debug channels)
+uniform int uOwnPixelsOnly;  // 1: keep the target where another renderer owns the pixel (alpha 0)
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec3 color = texture(uHdr, vUv).rgb;
+    vec4 hdr = texture(uHdr, vUv);
+    if (uOwnPixelsOnly != 0 && hdr.a < 0.5) discard;
+    vec3 color = hdr.rgb;
     float depth = texture(uDepth, vUv).r;
     if (uFogEnabled != 0 && depth < 1.0) {
         vec4 view = uInvProj * vec4(vUv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);

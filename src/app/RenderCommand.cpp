@@ -6,6 +6,7 @@
 #include "platform/EglContext.h"
 #include "app/RenderOptionsCli.h"
 #include "render/Offscreen.h"
+#include "render/RegionView.h"
 #include "render/SplitView.h"
 #include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
@@ -65,18 +66,23 @@ BatchResult renderBatch(const BatchJob& job) {
 
     render::RenderOptions options = job.render;
     options.strictParameters = true;
-    // One renderer, or two side by side; `renderer` is the only or the left one (stats, soak).
+    // One renderer, two side by side, or one per region of the scene; `renderer` is the only,
+    // the left or the base one (stats, soak).
     std::unique_ptr<render::Renderer> single;
     std::unique_ptr<render::SplitView> split;
-    if (job.split.empty()) {
-        single = std::make_unique<render::Renderer>(scene, options);
-    } else {
+    std::unique_ptr<render::RegionView> regions;
+    if (!job.split.empty()) {
         split = std::make_unique<render::SplitView>(scene, options, splitSideOptions(options, job.split));
         split->setDivider(job.splitAt);
+    } else if (render::drawsByRegion(options, scene)) {
+        regions = std::make_unique<render::RegionView>(scene, options);
+    } else {
+        single = std::make_unique<render::Renderer>(scene, options);
     }
-    render::Renderer& renderer = split ? split->left() : *single;
+    render::Renderer& renderer = split ? split->left() : regions ? regions->base() : *single;
     const auto draw = [&](float t, int w, int h, GLuint fb) {
         if (split) split->render(t, scene.cameraAt(t), w, h, fb);
+        else if (regions) regions->render(t, scene.cameraAt(t), w, h, fb);
         else renderer.render(t, scene.cameraAt(t), w, h, fb);
     };
     auto target = std::make_unique<render::OffscreenTarget>(job.width, job.height);
@@ -129,7 +135,7 @@ BatchResult renderBatch(const BatchJob& job) {
             std::snprintf(name, sizeof name, "frame_%04d.png", i);
             util::writePng(job.outDir / name, width, height, pixels);
         }
-        const PassTimes& p = renderer.waitForTimes();  // a PNG's read-back has synchronised already
+        const PassTimes p = regions ? regions->waitForTimes() : renderer.waitForTimes();  // a PNG's read-back has synchronised already
         const auto& triangles = renderer.shadowTriangles();
         if (result.shadowTriangles.size() < triangles.size()) result.shadowTriangles.resize(triangles.size());
         for (std::size_t l = 0; l < triangles.size(); ++l)
@@ -144,7 +150,7 @@ BatchResult renderBatch(const BatchJob& job) {
     }
     result.frames = job.frames;
     if (soaking) sample(job.frames);
-    result.shadowMemoryBytes = renderer.shadowMemoryBytes();
+    result.shadowMemoryBytes = regions ? regions->shadowMemoryBytes() : renderer.shadowMemoryBytes();
 
     nlohmann::json lights = nlohmann::json::array();
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -181,6 +187,15 @@ BatchResult renderBatch(const BatchJob& job) {
     if (split)
         stats["split"] = {{"left", split->left().technique().name()}, {"right", split->right().technique().name()},
                           {"divider_column", split->dividerColumn(job.width)}};
+    if (regions) {
+        nlohmann::json list = nlohmann::json::array();
+        for (std::size_t r = 0; r < scene.regions.size(); ++r) {
+            render::Renderer& region = regions->region(r);
+            list.push_back({{"name", scene.regions[r].name}, {"technique", region.technique().name()},
+                            {"shadow_resolution", region.options().shadowResolution}});
+        }
+        stats["regions"] = list;
+    }
     if (soaking) {
         nlohmann::json soak = nlohmann::json::array();
         for (const SoakSample& s : result.soak)

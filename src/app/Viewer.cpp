@@ -9,6 +9,7 @@
 #include "app/ShaderWatcher.h"
 #include "render/Offscreen.h"
 #include "render/Renderer.h"
+#include "render/RegionView.h"
 #include "render/SplitView.h"
 #include "reference/BackgroundReference.h"
 #include "gl/Texture.h"
@@ -57,6 +58,7 @@ struct ViewerState {
     bool showHeat = false;
     bool draggingDivider = false;
     bool swapSides = false;  // x: the split view's renderers change places
+    bool byRegion = false;   // k: the scene's regions, each with its own technique (render/RegionView.h)
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -120,6 +122,13 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
         ImGui::PopStyleColor();
     }
 
+    if (const auto& regions = renderer.scene().regions; !regions.empty()) {  // seed 002's combined technique
+        ImGui::Checkbox("a technique per region (k)", &state.byRegion);
+        if (state.byRegion)
+            for (const scene::Region& r : regions)
+                ImGui::BulletText("%s: %s%s", r.name.c_str(), r.technique.empty() ? "(scene's)" : r.technique.c_str(),
+                                  r.shadowResolution > 0 ? (" " + std::to_string(r.shadowResolution)).c_str() : "");
+    }
     if (ImGui::CollapsingHeader("technique", ImGuiTreeNodeFlags_DefaultOpen)) {
         const std::string current = renderer.technique().name();
         if (ImGui::BeginCombo("technique", current.c_str())) {
@@ -127,6 +136,7 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
                 if (ImGui::Selectable(info.name.c_str(), info.name == current)) {
                     try {
                         renderer.setTechnique(info.name);
+                        state.byRegion = false;  // a technique chosen here covers the whole scene
                     } catch (const std::exception& e) {
                         log::error("{}", e.what());
                     }
@@ -179,7 +189,7 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     }
     if (ImGui::CollapsingHeader("keys"))
         ImGui::TextWrapped("WASD/QE move, right-drag look, arrows move the light, 1-5 map resolution, space animation, "
-                           "o debug maps, c camera, v split view (drag the divider), x swap the halves, r reference of this view, "
+                           "o debug maps, c camera, v split view (drag the divider), x swap the halves, k a technique per region, r reference of this view, "
                            "g its heat map, m full screen, n FPS, "
                            "h hide panel, p screenshot, Esc quit");
     ImGui::PopItemWidth();
@@ -294,6 +304,8 @@ int runViewer(const ViewerOptions& opts) {
     // Split view (render/SplitView.h): the right side's own renderer, null when off.
     std::unique_ptr<render::Renderer> right;
     if (!opts.split.empty()) right = std::make_unique<render::Renderer>(*scenePtr, splitSideOptions(opts.render, opts.split));
+    // The scene's regions (render/RegionView.h), built when first shown, dropped when the scene changes.
+    std::unique_ptr<render::RegionView> regions;
     auto controllerPtr = std::make_unique<scene::CameraController>(scenePtr->camera);
     if (opts.controller == "trackball") controllerPtr->setMode(scene::Camera::Controller::Trackball);
     if (opts.controller == "orbit") controllerPtr->setMode(scene::Camera::Controller::Orbit);
@@ -311,6 +323,7 @@ int runViewer(const ViewerOptions& opts) {
     ImGui_ImplOpenGL3_Init("#version 450 core");
 
     ViewerState state;
+    state.byRegion = render::drawsByRegion(opts.render, *scenePtr) && !right;
     GLFWwindow* win = window.handle();
     glfwSetWindowUserPointer(win, &state);
     glfwSetDropCallback(win, [](GLFWwindow* w, int count, const char** paths) {
@@ -353,6 +366,8 @@ int runViewer(const ViewerOptions& opts) {
                 controllerPtr = std::make_unique<scene::CameraController>(next->camera);
                 rendererPtr = std::move(nextRenderer);
                 right = std::move(nextRight);
+                regions.reset();
+                state.byRegion = !next->regions.empty() && !right;
                 scenePtr = std::move(next);
                 pivot = scenePtr->boundsAt(0.0f).center();
                 state.time = 0.0f;
@@ -373,6 +388,7 @@ int runViewer(const ViewerOptions& opts) {
         if (shaders.changed()) {  // a shader file was saved: rebuild, or keep the last good programs
             state.shaderError = renderer.reloadShaders();
             if (right && state.shaderError.empty()) state.shaderError = right->reloadShaders();
+            if (state.shaderError.empty()) regions.reset();  // rebuilt from the new files when next drawn
             if (state.shaderError.empty()) log::info("shaders reloaded");
             else log::error("{}", state.shaderError);
         }
@@ -406,6 +422,7 @@ int runViewer(const ViewerOptions& opts) {
                 if (right) right.reset();
                 else right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
             }
+            if (pressed(GLFW_KEY_K) && !scene.regions.empty()) state.byRegion = !state.byRegion;
             if (pressed(GLFW_KEY_X) && right) state.swapSides = true;  // done before the next frame binds them
             if (pressed(GLFW_KEY_C)) controller.setMode(static_cast<scene::Camera::Controller>((static_cast<int>(controller.mode()) + 1) % 3));
             for (int k = 0; k < 5; ++k)
@@ -446,8 +463,20 @@ int runViewer(const ViewerOptions& opts) {
             leaveReference(state);  // the view moved away from the frozen frame
         controller.update(input);
 
+        if (state.byRegion && !right && !regions) {
+            try {  // the regions' renderers use the window's options with the scene's techniques
+                render::RenderOptions base = renderer.options();
+                base.technique.clear();
+                regions = std::make_unique<render::RegionView>(scene, base);
+            } catch (const std::exception& e) {  // a region naming an unknown technique: say so, draw one technique
+                state.loadError = e.what();
+                state.byRegion = false;
+                log::error("{}", e.what());
+            }
+        }
         try {
             if (right) render::renderSplit(renderer, *right, state.divider, state.time, scene.camera, w, h, 0);
+            else if (state.byRegion && regions) regions->render(state.time, scene.camera, w, h, 0);
             else renderer.render(state.time, scene.camera, w, h, 0);
         } catch (const std::exception& e) {
             log::error("{}", e.what());

@@ -115,6 +115,7 @@ std::string Renderer::reloadShaders() {
         overlay_ = std::move(passes.overlay);
         lines_ = std::move(passes.lines);
         oit_.reset();  // rebuilt from the new files on first use
+        occluder_ = {};
         return "";
     } catch (const std::exception& e) {
         return e.what();
@@ -216,13 +217,16 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     hdrFbo_.bind();
     glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;
-    const glm::vec4 clear = shaded ? glm::vec4(scene_.background, 1.0f) : glm::vec4(0.0f);
+    // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
+    // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
+    const glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
     glClearNamedFramebufferfv(hdrFbo_.id(), GL_COLOR, 0, &clear.x);
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(hdrFbo_.id(), GL_DEPTH, 0, &farDepth);
     {
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
+        drawOccluders(draws, camera, aspect);
         drawSurfaces(draws, false, camera, aspect);
         if (options_.debugOverlay) drawDebugLines(camera, aspect);
         timer_.end(Pass::Opaque);
@@ -304,17 +308,36 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     prepareLighting(lighting_, translucent, camera, aspect);
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
-    if (translucent) {  // dst = src + dst * transmittance (per channel, second fragment output)
-        state.withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ONE, GL_SRC1_COLOR));
+    if (translucent) {
+        state.withBlend(overTransmittance());
         state.depthWrite = false;
     }
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     for (const Draw& d : draws) {
-        if (d.translucent != translucent || !d.visible) continue;
+        if (d.translucent != translucent || !d.visible || (!translucent && !ownObject(d.object))) continue;
         if (byTriangle) gpu_.drawTrianglesSorted(d, lighting_, camera.position);
         else gpu_.draw(d, lighting_);
     }
+}
+
+void Renderer::setReceivers(std::vector<bool> own, bool ownPixelsOnly) {
+    ownObjects_ = std::move(own);
+    ownPixelsOnly_ = ownPixelsOnly;
+}
+
+// The opaque objects another renderer shades, into depth only (alpha-tested texels stay holes),
+// before this renderer's own: they hide its surfaces where they are in front.
+void Renderer::drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
+    if (ownObjects_.empty()) return;
+    if (!occluder_.id())  // the shadow passes' caster shaders, with the camera as the "light"
+        occluder_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
+    occluder_.set("uLightViewProj", camera.projection(aspect) * camera.view());
+    gl::PassState state = gl::PassState::depthOnly();
+    state.colorWrite = glm::bvec4(false);
+    const gl::ScopedPassState scope(state);
+    for (const Draw& d : draws)
+        if (d.visible && !d.translucent && !ownObject(d.object)) gpu_.draw(d, occluder_);
 }
 
 void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {
@@ -327,6 +350,7 @@ void Renderer::resolve(GLuint target, int width, int height, const scene::Camera
     resolve_.set("uFog", glm::vec2(scene_.fog.start, scene_.fog.end));
     resolve_.set("uFogEnabled", shaded && scene_.fog.enabled ? 1 : 0);
     resolve_.set("uEncodeSrgb", shaded ? 1 : 0);
+    resolve_.set("uOwnPixelsOnly", ownPixelsOnly_ ? 1 : 0);
     hdr_.bind(0);
     depth_.bind(1);
     resolve_.use();

@@ -66,6 +66,13 @@ public:
     void setOutputMode(OutputMode mode, int debugLight = 0);
     // Anisotropic filtering of the scene's textures, 1-16 (RenderOptions::anisotropy).
     void setAnisotropy(int anisotropy);
+    // Seed 002's combined technique (render/RegionView.h): `own[i]` says whether this renderer
+    // shades object i. The others are drawn into depth alone, so they still hide what lies behind
+    // them. With `ownPixelsOnly` the output keeps just the pixels whose nearest opaque surface is
+    // one of its own and leaves the rest of the target as it was; otherwise every pixel is written
+    // (the others' as background). Translucent objects are drawn by every renderer, over whichever
+    // surface owns the pixel. Empty `own` (the default): every object is its own.
+    void setReceivers(std::vector<bool> own, bool ownPixelsOnly);
     // Rebuilds every program from the shader files as they are now (live editing): the
     // technique (keeping its current parameter values) and the renderer's own passes. All or
     // nothing: on a compile error nothing changes, the last good programs keep drawing, and the
@@ -101,6 +108,8 @@ public:
 private:
     void ensureTargets(int width, int height);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
+    void drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
+    bool ownObject(std::size_t object) const { return ownObjects_.empty() || (object < ownObjects_.size() && ownObjects_[object]); }
     void useLightLayout(std::vector<std::string> layout);
     void drawDebugLines(const scene::Camera& camera, float aspect);
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
@@ -112,6 +121,9 @@ private:
     GpuScene gpu_;
     std::unique_ptr<shadows::ShadowTechnique> technique_;
     gl::Program lighting_, resolve_, overlay_, lines_;
+    std::vector<bool> ownObjects_;  // setReceivers; empty: all
+    bool ownPixelsOnly_ = false;
+    gl::Program occluder_;  // depth of the objects another renderer shades (built on first use)
     std::vector<std::string> lightLayout_;  // the defines lighting_ was built with (render/LightingProgram.h)
     gl::Buffer lineVertices_;
     gl::VertexArray lineVao_;

@@ -214,7 +214,7 @@ void OrderIndependentTransparency::dualPeel(int passes, const GpuScene& gpu, con
 void OrderIndependentTransparency::composite(int mode, int layers, const gl::Framebuffer& hdr, int w, int h) {
     hdr.bind();
     glViewport(0, 0, w, h);
-    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ONE, GL_SRC1_COLOR)));
+    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend(overTransmittance()));
     resolve_.set("uMode", mode);
     resolve_.set("uLayers", layers);
     accum_.bind(0);

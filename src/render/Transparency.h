@@ -9,6 +9,7 @@
 //   stochastic        Enderton et al. 2010: 4-sample stochastic depth, then visibility-weighted
 //                     colour with alpha correction (exact coloured transmittance)
 #include "gl/Framebuffer.h"
+#include "gl/PassState.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
@@ -20,6 +21,13 @@
 #include <vector>
 
 namespace penumbra::render {
+
+// Translucent colour over what is behind it: dst.rgb = src.rgb + dst.rgb * transmittance (the
+// second fragment output, per channel). Alpha is kept as it was: it marks the pixels whose
+// opaque surface the renderer shaded itself (Renderer::setReceivers).
+inline gl::BlendState overTransmittance() {
+    return {GL_FUNC_ADD, GL_FUNC_ADD, GL_ONE, GL_SRC1_COLOR, GL_ZERO, GL_ONE};
+}
 
 enum class TransparencyMode { SortedObjects, SortedTriangles, DepthPeeling, DualDepthPeeling, WeightedBlended, Stochastic };
 const char* toString(TransparencyMode mode);

@@ -9,6 +9,7 @@
 #include "scene/Mesh.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct Object {
     Animation animation;
     bool castsShadow = true;
     bool visible = true;  // false: a shadow-only caster the camera does not see
+    int region = -1;      // index into Scene::regions; -1: drawn with the scene's own technique
 
     glm::mat4 transformAt(float time) const;
 };
@@ -34,6 +36,16 @@ struct CameraPath {
     Track position;
     Track target;
     bool empty() const { return position.empty() && target.empty(); }
+};
+
+// Seed 002's combined technique (its section 3.2, Fig. 3.2): a part of the scene whose surfaces are
+// shaded with a technique and map resolution of their own, beside the others in the same frame.
+// The scene only names them; render/RegionView.h gives each region its renderer and maps.
+struct Region {
+    std::string name;
+    std::string technique;     // a shadow technique's name, "" = the scene's
+    int shadowResolution = 0;  // > 0: every light's map resolution for this region
+    std::map<std::string, std::string> parameters;  // technique parameters as text, e.g. "radius_texels": "3"
 };
 
 struct Fog {
@@ -54,6 +66,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Image> images;
     std::vector<Object> objects;
+    std::vector<Region> regions;  // empty: one technique for the whole scene
 
     const Material& material(const Object& object, const MeshPart& part) const;
     Bounds boundsAt(float time) const;  // world bounds of every object at `time`

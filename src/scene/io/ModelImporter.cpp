@@ -210,9 +210,23 @@ int importTimeoutSeconds = 120;
 // probe child and this process must read identically for the probe to vouch for the real read.
 const aiScene* readWithAssimp(Assimp::Importer& importer, const fs::path& file) {
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    return importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                                aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                                                aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
+    const aiScene* raw = importer.ReadFile(file.string(), 0);
+    if (!raw) return nullptr;
+    // Assimp's OBJ reader turns two-vertex faces ("f 1 2", as in Sweet Home 3D's park-light.obj)
+    // into LINE faces without reporting LINE in the mesh's primitive types, which validation then
+    // rejects and SortByPType cannot remove. Recount the types from the faces first.
+    for (unsigned m = 0; raw->mMeshes && m < raw->mNumMeshes; ++m) {
+        aiMesh* mesh = raw->mMeshes[m];
+        if (!mesh || !mesh->mFaces) continue;  // validation names what is missing
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE : n == 3 ? aiPrimitiveType_TRIANGLE : aiPrimitiveType_POLYGON;
+        }
+        if (types) mesh->mPrimitiveTypes = types;
+    }
+    return importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                                        aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData);
 }
 
 std::string assimpName() {

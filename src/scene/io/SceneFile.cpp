@@ -276,7 +276,7 @@ Animation readAnimation(const Reader& r, const json& j, const std::string& p) {
 
 void readObject(const Reader& r, const json& j, const std::string& p, Scene& scene) {
     r.allowKeys(j, p, {"name", "model", "shape", "size", "radius", "position", "rotation_deg", "scale", "material",
-                       "animation", "cast_shadows", "visible"});
+                       "animation", "cast_shadows", "visible", "region"});
     Object o;
     const bool hasModel = j.contains("model"), hasShape = j.contains("shape");
     if (hasModel == hasShape) r.fail(p, "", "an object needs exactly one of 'model' or 'shape'");
@@ -325,7 +325,41 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
         if (!j[key].is_boolean()) r.fail(p, key, std::string("'") + key + "' must be true or false");
         *flag = j[key].get<bool>();
     }
+    if (j.contains("region")) {
+        const std::string name = r.string(j, "region", p, "");
+        const auto it = std::find_if(scene.regions.begin(), scene.regions.end(), [&](const Region& g) { return g.name == name; });
+        if (it == scene.regions.end()) {
+            std::string known;
+            for (const Region& g : scene.regions) known += (known.empty() ? "'" : ", '") + g.name + "'";
+            r.fail(p, "region", "unknown region '" + name + "'; the scene's 'regions' are: " + (known.empty() ? "none" : known));
+        }
+        o.region = static_cast<int>(it - scene.regions.begin());
+    }
     scene.objects.push_back(std::move(o));
+}
+
+void readRegion(const Reader& r, const json& j, const std::string& p, Scene& scene) {
+    r.allowKeys(j, p, {"name", "technique", "shadow_resolution", "parameters"});
+    Region g;
+    g.name = r.string(j, "name", p, "");
+    if (g.name.empty()) r.fail(p, "name", "a region needs a non-empty 'name' (objects name it in their 'region')");
+    for (const Region& other : scene.regions)
+        if (other.name == g.name) r.fail(p, "name", "two regions are named '" + g.name + "'");
+    g.technique = r.string(j, "technique", p, "");
+    const float resolution = r.number(j, "shadow_resolution", p, 0.0f);
+    if (j.contains("shadow_resolution") && !(resolution >= 16 && resolution <= 16384))
+        r.fail(p, "shadow_resolution", "'shadow_resolution' must be within 16..16384");
+    g.shadowResolution = static_cast<int>(resolution);
+    if (j.contains("parameters")) {
+        const json& params = j["parameters"];
+        if (!params.is_object()) r.fail(p, "parameters", "'parameters' must be an object of name: value");
+        for (const auto& [name, value] : params.items()) {
+            if (value.is_string()) g.parameters[name] = value.get<std::string>();
+            else if (value.is_number() || value.is_boolean()) g.parameters[name] = value.dump();
+            else r.fail(p + ".parameters", name, "parameter '" + name + "' must be a number, true/false or a string");
+        }
+    }
+    scene.regions.push_back(std::move(g));
 }
 
 // nlohmann reports a byte offset; turn it into line:column of the file.
@@ -354,7 +388,7 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
     }
     const Reader r(text, file);
     r.allowKeys(doc, "", {"name", "description", "camera", "camera_path", "ambient", "background", "fog", "lights",
-                          "objects", "technique"});
+                          "objects", "technique", "regions"});
     Scene scene;
     scene.source = file;
     if (doc.contains("camera")) readCamera(r, doc["camera"], scene.camera);
@@ -383,6 +417,11 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
                                      std::to_string(kLightLimit));
         for (std::size_t i = 0; i < doc["lights"].size(); ++i)
             readLight(r, doc["lights"][i], "lights[" + std::to_string(i) + "]", scene);
+    }
+    if (doc.contains("regions")) {  // before the objects, which name them
+        if (!doc["regions"].is_array()) r.fail("", "regions", "'regions' must be an array");
+        for (std::size_t i = 0; i < doc["regions"].size(); ++i)
+            readRegion(r, doc["regions"][i], "regions[" + std::to_string(i) + "]", scene);
     }
     if (!doc.contains("objects") || !doc["objects"].is_array() || doc["objects"].empty())
         r.fail("", "objects", "a scene needs a non-empty 'objects' array");

@@ -54,7 +54,7 @@ void PlanarProjectedShadows::flattenCasters(const ShadowFrame& frame, int light)
     // blend multiplies visibility by 1 - opacity.
     gl::PassState flatten = gl::PassState::depthOnly()
                                 .withPolygonOffset(-1.0f, -4.0f)
-                                .withStencil({.func = GL_EQUAL, .ref = 1, .mask = 0xff, .depthPass = stencilOnce_ ? GL_INCR : GL_KEEP})
+                                .withStencil({.func = GL_EQUAL, .ref = 1, .mask = 0xff, .depthPass = GLenum(stencilOnce_ ? GL_INCR : GL_KEEP)})
                                 .withBlend(gl::BlendState::of(GL_FUNC_ADD, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA));
     flatten.depthFunc = GL_LEQUAL;
     flatten.depthWrite = false;
