@@ -47,6 +47,14 @@ TEST(ModelImport, ObjMtlCoverageAndTransmission) {
     EXPECT_NEAR(byName(s, "tr_only").alpha, 0.25f, 1e-6f) << "Tr is 1 - d";
 }
 
+// Two-vertex faces ("f 1 2", as Sweet Home 3D's park-light.obj has) are lines, dropped; the
+// triangle and the quad around them load (Assimp's own validation used to reject the file).
+TEST(ModelImport, ObjTwoVertexFacesAreDroppedNotFatal) {
+    Scene s;
+    const int mesh = importModel(kData / "two_vertex_faces.obj", s);
+    EXPECT_EQ(s.meshes[static_cast<std::size_t>(mesh)].triangleCount(), 3u) << "1 triangle + a quad as 2";
+}
+
 TEST(ModelImport, GltfAlphaModesTransmissionAndVolume) {
     Scene s;
     importModel(kData / "materials.gltf", s);
