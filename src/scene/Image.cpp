@@ -4,8 +4,17 @@
 
 #include <stb_image.h>
 
+#include <csetjmp>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <vector>
+
+#include <jpeglib.h>
 
 namespace penumbra::scene {
 
@@ -61,6 +70,101 @@ static Image missing(const std::filesystem::path& file) {
     return checker;
 }
 
+// JPEG goes through libjpeg-turbo rather than stb_image: Debian 12's stb_image (git 2022-09-08)
+// aborts the whole process on some corrupt JPEG streams (an assertion in stbi__jpeg_huff_decode,
+// CVE-2022-29977, nothings/stb#1289), which penumbra's image fuzzer hit within 40,000 inputs
+// (tests/fuzz/regressions/image/). libjpeg-turbo reports a corrupt stream as an error.
+struct JpegDecode {
+    jpeg_decompress_struct info{};
+    jpeg_error_mgr errors{};
+    std::jmp_buf failed{};
+    char message[JMSG_LENGTH_MAX] = {};
+    std::uint8_t* pixels = nullptr;  // malloc'd RGBA rows; the caller frees it
+    int width = 0, height = 0;
+};
+
+static bool isJpeg(const std::uint8_t* data, std::size_t bytes) {
+    return bytes >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF;
+}
+
+// libjpeg reports errors by calling error_exit, which must not return: it jumps back to
+// decodeJpeg's setjmp. Only C state lives between the two, so no destructor is skipped.
+static bool decodeJpeg(JpegDecode& job, const std::uint8_t* data, std::size_t bytes) {
+    job.info.err = jpeg_std_error(&job.errors);
+    job.errors.error_exit = [](j_common_ptr info) {
+        auto* self = reinterpret_cast<JpegDecode*>(reinterpret_cast<char*>(info->err) - offsetof(JpegDecode, errors));
+        (*info->err->format_message)(info, self->message);
+        std::longjmp(self->failed, 1);
+    };
+    job.errors.output_message = [](j_common_ptr) {};  // recoverable corruption: decoded as far as it goes
+    if (setjmp(job.failed)) {
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
+    jpeg_create_decompress(&job.info);
+    jpeg_mem_src(&job.info, data, static_cast<unsigned long>(bytes));
+    jpeg_read_header(&job.info, TRUE);
+    job.width = static_cast<int>(job.info.image_width);
+    job.height = static_cast<int>(job.info.image_height);
+    if (!tooLarge(job.width, job.height).empty()) {
+        jpeg_destroy_decompress(&job.info);
+        return false;  // the caller names the size
+    }
+    job.info.out_color_space = JCS_EXT_RGBA;
+    jpeg_start_decompress(&job.info);
+    const std::size_t row = static_cast<std::size_t>(job.info.output_width) * 4;
+    job.pixels = static_cast<std::uint8_t*>(std::malloc(row * job.info.output_height));
+    if (!job.pixels) {
+        std::snprintf(job.message, sizeof job.message, "out of memory for %dx%d pixels", job.width, job.height);
+        jpeg_destroy_decompress(&job.info);
+        return false;
+    }
+    while (job.info.output_scanline < job.info.output_height) {
+        JSAMPROW line = job.pixels + row * job.info.output_scanline;
+        jpeg_read_scanlines(&job.info, &line, 1);
+    }
+    jpeg_finish_decompress(&job.info);
+    jpeg_destroy_decompress(&job.info);
+    return true;
+}
+
+// A picture in memory as RGBA8, or why not: too large (the checker says its size), or corrupt.
+struct Decoded {
+    Image image;
+    std::string tooLarge, unreadable;  // one is set when decoding failed
+};
+static Decoded decode(const std::uint8_t* data, std::size_t bytes, const std::string& label) {
+    Decoded d;
+    if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+        d.tooLarge = "it is over 2 GiB";
+        return d;
+    }
+    if (isJpeg(data, bytes)) {
+        JpegDecode job;
+        const bool ok = decodeJpeg(job, data, bytes);
+        if (ok) {
+            d.image.source = label;
+            d.image.width = job.width;
+            d.image.height = job.height;
+            d.image.rgba.assign(job.pixels, job.pixels + static_cast<std::size_t>(job.width) * job.height * 4);
+        } else if (d.tooLarge = tooLarge(job.width, job.height); d.tooLarge.empty()) {
+            d.unreadable = std::string("corrupt JPEG: ") + (job.message[0] ? job.message : "unknown error");
+        }
+        std::free(job.pixels);
+        return d;
+    }
+    const int size = static_cast<int>(bytes);
+    int w = 0, h = 0, n = 0;
+    if (stbi_info_from_memory(data, size, &w, &h, &n) && !(d.tooLarge = tooLarge(w, h)).empty()) return d;
+    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &n, 4);
+    if (!pixels) {
+        d.unreadable = stbi_failure_reason() ? stbi_failure_reason() : "unknown reason";
+        return d;
+    }
+    d.image = fromStb(pixels, w, h, label);
+    return d;
+}
+
 Image loadImageOrChecker(const std::filesystem::path& file, const std::string& referencedFrom) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) {
@@ -68,41 +172,35 @@ Image loadImageOrChecker(const std::filesystem::path& file, const std::string& r
                   std::filesystem::exists(file, ec) ? "is not a regular file" : "does not exist");
         return missing(file);
     }
-    int w = 0, h = 0, n = 0;
-    if (stbi_info(file.string().c_str(), &w, &h, &n)) {
-        if (const std::string why = tooLarge(w, h); !why.empty()) {
-            log::warn("{}: texture '{}' is too large ({}); using a checker", referencedFrom, file.string(), why);
-            return missing(file);
-        }
-    }
-    stbi_uc* pixels = stbi_load(file.string().c_str(), &w, &h, &n, 4);
-    if (!pixels) {
-        log::warn("{}: texture '{}' cannot be read ({}); using a checker", referencedFrom, file.string(),
-                  stbi_failure_reason() ? stbi_failure_reason() : "unknown reason");
+    std::ifstream in(file, std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) {
+        log::warn("{}: texture '{}' cannot be read; using a checker", referencedFrom, file.string());
         return missing(file);
     }
-    return fromStb(pixels, w, h, file.string());
+    Decoded d = decode(bytes.data(), bytes.size(), file.string());
+    if (!d.tooLarge.empty()) {
+        log::warn("{}: texture '{}' is too large ({}); using a checker", referencedFrom, file.string(), d.tooLarge);
+        return missing(file);
+    }
+    if (!d.unreadable.empty()) {
+        log::warn("{}: texture '{}' cannot be read ({}); using a checker", referencedFrom, file.string(), d.unreadable);
+        return missing(file);
+    }
+    return std::move(d.image);
 }
 
 Image imageFromMemory(const std::uint8_t* data, std::size_t bytes, const std::string& label) {
-    int w = 0, h = 0, n = 0;
-    if (bytes > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-        log::warn("embedded texture '{}' is over 2 GiB; using a checker", label);
+    Decoded d = decode(data, bytes, label);
+    if (!d.tooLarge.empty()) {
+        log::warn("embedded texture '{}' is too large ({}); using a checker", label, d.tooLarge);
         return checkerImage();
     }
-    const int size = static_cast<int>(bytes);
-    if (stbi_info_from_memory(data, size, &w, &h, &n)) {
-        if (const std::string why = tooLarge(w, h); !why.empty()) {
-            log::warn("embedded texture '{}' is too large ({}); using a checker", label, why);
-            return checkerImage();
-        }
-    }
-    stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &n, 4);
-    if (!pixels) {
-        log::warn("embedded texture '{}' cannot be decoded; using a checker", label);
+    if (!d.unreadable.empty()) {
+        log::warn("embedded texture '{}' cannot be decoded ({}); using a checker", label, d.unreadable);
         return checkerImage();
     }
-    return fromStb(pixels, w, h, label);
+    return std::move(d.image);
 }
 
 }  // namespace penumbra::scene
