@@ -4,6 +4,7 @@
 #include "app/ReferenceCommands.h"
 #include "app/RenderCommand.h"
 #include "app/RenderOptionsCli.h"
+#include "app/SeedLaunch.h"
 #include "app/TechniqueList.h"
 #include "app/Viewer.h"
 #include "platform/GlfwWindow.h"
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <unistd.h>
 
 using namespace penumbra;
 
@@ -74,6 +76,8 @@ int main(int argc, char** argv) {
     view->add_option("--controller", viewer.controller, "fly | trackball | orbit")->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
+    app::SeedChoices viewSeed, renderSeed;
+    app::addSeedChoices(*view, viewSeed);
     view->add_flag("--storm", viewer.resizeStorm, "robustness drill: minimise, restore, 1x1, 8192x8192 and technique switches, every frame");
 
     auto* rend = cli.add_subcommand("render", "render frames headless (EGL) to PNG + stats.json");
@@ -92,6 +96,13 @@ int main(int argc, char** argv) {
     rend->add_option("--split", job.split, "split view: the columns right of the divider with TECHNIQUE[:name=value,...]");
     rend->add_option("--split-at", job.splitAt, "split view: share of the width left of the divider (default 0.5)")->check(CLI::Range(0.0f, 1.0f));
     app::addEglPlatform(*rend, job.eglPlatform);
+    app::addSeedChoices(*rend, renderSeed);
+    std::string renderController;  // -m on render: accepted for batch files that also open windows
+    
+    auto* menu = cli.add_subcommand("menu", "seed 002's text menu: scene, technique, camera manipulator (and LiSPSM's tiles), then the window");
+    bool menuPrintOnly = false;
+    menu->add_flag("--print", menuPrintOnly, "print the chosen options and the equal command line instead of opening the window");
+    menu->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
 
     app::ReportJob report;
     std::string techniqueList;
@@ -172,8 +183,12 @@ int main(int argc, char** argv) {
     bool verbose = false;
     techniques->add_flag("--verbose", verbose, "with every parameter: kind, range, default and help (needs an EGL context)");
 
+    // The seed's -sc -sh -m -cw -ch become long options CLI11 can parse (app/SeedLaunch.h).
+    const std::vector<std::string> args = app::expandSeedFlags(argc, argv);
+    std::vector<const char*> argPointers;
+    for (const auto& a : args) argPointers.push_back(a.c_str());
     try {
-        cli.parse(argc, argv);
+        cli.parse(static_cast<int>(argPointers.size()), argPointers.data());
     } catch (const CLI::ParseError& e) {
         return cli.exit(e);
     }
@@ -192,7 +207,24 @@ int main(int argc, char** argv) {
                 for (const auto& t : shadows::techniqueRegistry()) report.techniques.push_back(t.name);
             return app::runCompare(report);
         }
+        // Seed 002: with no arguments on a terminal with a display, its menu asks what to open.
+        const bool bareOnTerminal = argc == 1 && ::isatty(0) && platform::displayAvailable();
+        if (*menu || bareOnTerminal) {
+            const app::SeedChoices choices = app::askSeedMenu(std::cin, std::cout);
+            app::applySeedChoices(choices, viewer.scene, viewer.render, viewer.controller);
+            std::cout << "same as: " << app::seedCommandLine(choices) << "\n";
+            if (menuPrintOnly) {
+                std::cout << "scene " << viewer.scene.string() << "\ntechnique "
+                          << (viewer.render.technique.empty() ? "(the scene's regions)" : viewer.render.technique) << "\n";
+                for (const auto& [name, value] : viewer.render.parameters) std::cout << "--param " << name << "=" << value << "\n";
+                std::cout << "controller " << viewer.controller << "\n";
+                return 0;
+            }
+            viewer.scene = sceneOrDefault(viewer.scene);
+            return app::runViewer(viewer);
+        }
         if (*view || (!*rend && platform::displayAvailable())) {
+            app::applySeedChoices(viewSeed, viewer.scene, viewer.render, viewer.controller);
             viewer.scene = sceneOrDefault(viewer.scene);
             return app::runViewer(viewer);
         }
@@ -200,6 +232,7 @@ int main(int argc, char** argv) {
             std::cout << "penumbra: no display found; rendering the default scene headless instead\n";
             job.frames = 3;
         }
+        app::applySeedChoices(renderSeed, job.scene, job.render, renderController);
         job.scene = sceneOrDefault(job.scene);
         return runRender(job);
     } catch (const std::exception& e) {
