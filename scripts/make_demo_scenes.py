@@ -218,7 +218,7 @@ def street():
         "ambient": [0.12, 0.12, 0.14], "background": [0.5, 0.6, 0.75], "fog": {"start": 70, "end": 115},
         "technique": "hard",
         "regions": STREET_REGIONS,
-        "lights": [{"type": "directional", "name": "sun", "direction": [0.35, -0.7, -0.55], "color": [1, 0.95, 0.85],
+        "lights": [{"type": "directional", "name": "sun", "direction": [0.45, -0.5, -0.75], "color": [1, 0.95, 0.85],
                     "intensity": 1.0, "size": 0.5, "shadow": {"resolution": 2048}}],
         "objects": objects}
 
