@@ -244,6 +244,9 @@ def glass():
         "description": "Red, green and blue panes, a yellow glass block and a moving cyan glass ball whose coloured "
                        "shadows overlap and multiply on the floor and the wall, under a sun and a spot light.",
         "camera": {"position": [0.5, 4.2, 8.0], "target": [0, 0.8, 0.5], "fov_deg": 45, "near": 0.1, "far": 50},
+        "camera_path": {"position": [[0, 0.5, 4.2, 8.0], [6, 5.5, 3.0, 5.0], [12, 0.5, 5.0, 6.5], [18, -5.0, 3.0, 5.5],
+                                     [24, 0.5, 4.2, 8.0]],
+                        "target": [[0, 0, 0.8, 0.5]]},
         "ambient": [0.1, 0.1, 0.12], "background": [0.2, 0.22, 0.26],
         "technique": "cssm2",
         "lights": [{"type": "directional", "name": "sun", "direction": [0.5, -0.55, -0.65], "color": [1, 1, 1],

@@ -99,7 +99,7 @@ void parameterWidget(const shadows::Parameter& p) {
 
 // The panel: docked on the left, at most a third of the window wide, its sections collapsed
 // except the technique's, so the scene stays visible (h hides it).
-void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraController& controller) {
+void drawPanel(render::Renderer& renderer, const render::RegionView* regions, ViewerState& state, scene::CameraController& controller) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(display.x / 3.0f, 340.0f * ImGui::GetIO().FontGlobalScale);
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
@@ -107,10 +107,13 @@ void drawPanel(render::Renderer& renderer, ViewerState& state, scene::CameraCont
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("penumbra", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.0f);  // labels keep 7 em on the right
-    const render::PassTimes& t = renderer.lastTimes();
+    // By region: every region's renderer together (its own maps, its own passes).
+    const bool byRegion = state.byRegion && regions;
+    const render::PassTimes t = byRegion ? regions->lastTimes() : renderer.lastTimes();
+    const std::size_t shadowBytes = byRegion ? regions->shadowMemoryBytes() : renderer.shadowMemoryBytes();
     ImGui::Text("%.1f FPS, GPU %.1f ms", state.fps(), t.totalMs());
     ImGui::Text("shadow %.1f | opaque %.1f ms", t.shadowMs, t.opaqueMs);
-    ImGui::Text("shadow memory %.1f MiB", static_cast<double>(renderer.shadowMemoryBytes()) / (1024.0 * 1024.0));
+    ImGui::Text("shadow memory %.1f MiB", static_cast<double>(shadowBytes) / (1024.0 * 1024.0));
     if (!state.loadError.empty()) {  // a dropped file that did not load: the old scene keeps drawing
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("could not load the dropped file (the previous scene stays):\n%s", state.loadError.c_str());
@@ -487,11 +490,12 @@ int runViewer(const ViewerOptions& opts) {
         ImGui::NewFrame();
         if (right && !state.reference) labelSplit(renderer, *right, state.divider);  // the reference covers both halves
         if (state.reference) drawReference(state, renderer);
-        if (state.showPanel) drawPanel(renderer, state, controller);
+        if (state.showPanel) drawPanel(renderer, regions.get(), state, controller);
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
             ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(), renderer.lastTimes().totalMs());
+            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(),
+                        (state.byRegion && regions ? regions->lastTimes() : renderer.lastTimes()).totalMs());
             ImGui::End();
         }
         ImGui::Render();

@@ -38,15 +38,22 @@ void RegionView::render(float time, const scene::Camera& camera, int width, int 
     for (auto& region : regions_) region->render(time, camera, width, height, target);
 }
 
+static void add(PassTimes& sum, const PassTimes& t) {
+    sum.shadowMs += t.shadowMs;
+    sum.opaqueMs += t.opaqueMs;
+    sum.translucentMs += t.translucentMs;
+    sum.postMs += t.postMs;
+}
+
 PassTimes RegionView::waitForTimes() {
     PassTimes sum = base_->waitForTimes();
-    for (auto& region : regions_) {
-        const PassTimes& t = region->waitForTimes();
-        sum.shadowMs += t.shadowMs;
-        sum.opaqueMs += t.opaqueMs;
-        sum.translucentMs += t.translucentMs;
-        sum.postMs += t.postMs;
-    }
+    for (auto& region : regions_) add(sum, region->waitForTimes());
+    return sum;
+}
+
+PassTimes RegionView::lastTimes() const {
+    PassTimes sum = base_->lastTimes();
+    for (const auto& region : regions_) add(sum, region->lastTimes());
     return sum;
 }
 

@@ -31,6 +31,8 @@ public:
     Renderer& region(std::size_t i) { return *regions_[i]; }
     // The last frame's GPU times of all renderers together (waits for them).
     PassTimes waitForTimes();
+    // The newest finished frame's times of all renderers together, without waiting (the panel).
+    PassTimes lastTimes() const;
     std::size_t shadowMemoryBytes() const;
 
 private:

@@ -130,8 +130,9 @@ static bool decodeJpeg(JpegDecode& job, const std::uint8_t* data, std::size_t by
 
 // A picture in memory as RGBA8, or why not: too large (the checker says its size), or corrupt.
 struct Decoded {
-    Image image;
-    std::string tooLarge, unreadable;  // one is set when decoding failed
+    bool ok = false;
+    Image image;                       // when ok
+    std::string tooLarge, unreadable;  // else why: the size, or what is wrong with the data
 };
 static Decoded decode(const std::uint8_t* data, std::size_t bytes, const std::string& label) {
     Decoded d;
@@ -143,6 +144,7 @@ static Decoded decode(const std::uint8_t* data, std::size_t bytes, const std::st
         JpegDecode job;
         const bool ok = decodeJpeg(job, data, bytes);
         if (ok) {
+            d.ok = true;
             d.image.source = label;
             d.image.width = job.width;
             d.image.height = job.height;
@@ -158,9 +160,12 @@ static Decoded decode(const std::uint8_t* data, std::size_t bytes, const std::st
     if (stbi_info_from_memory(data, size, &w, &h, &n) && !(d.tooLarge = tooLarge(w, h)).empty()) return d;
     stbi_uc* pixels = stbi_load_from_memory(data, size, &w, &h, &n, 4);
     if (!pixels) {
-        d.unreadable = stbi_failure_reason() ? stbi_failure_reason() : "unknown reason";
+        // stb may fail without a reason (seen with a fuzzed PNG): never an empty message.
+        const char* reason = stbi_failure_reason();
+        d.unreadable = reason && *reason ? reason : "unknown reason";
         return d;
     }
+    d.ok = true;
     d.image = fromStb(pixels, w, h, label);
     return d;
 }
@@ -179,28 +184,24 @@ Image loadImageOrChecker(const std::filesystem::path& file, const std::string& r
         return missing(file);
     }
     Decoded d = decode(bytes.data(), bytes.size(), file.string());
+    if (d.ok) return std::move(d.image);
     if (!d.tooLarge.empty()) {
         log::warn("{}: texture '{}' is too large ({}); using a checker", referencedFrom, file.string(), d.tooLarge);
         return missing(file);
     }
-    if (!d.unreadable.empty()) {
-        log::warn("{}: texture '{}' cannot be read ({}); using a checker", referencedFrom, file.string(), d.unreadable);
-        return missing(file);
-    }
-    return std::move(d.image);
+    log::warn("{}: texture '{}' cannot be read ({}); using a checker", referencedFrom, file.string(), d.unreadable);
+    return missing(file);
 }
 
 Image imageFromMemory(const std::uint8_t* data, std::size_t bytes, const std::string& label) {
     Decoded d = decode(data, bytes, label);
+    if (d.ok) return std::move(d.image);
     if (!d.tooLarge.empty()) {
         log::warn("embedded texture '{}' is too large ({}); using a checker", label, d.tooLarge);
         return checkerImage();
     }
-    if (!d.unreadable.empty()) {
-        log::warn("embedded texture '{}' cannot be decoded ({}); using a checker", label, d.unreadable);
-        return checkerImage();
-    }
-    return std::move(d.image);
+    log::warn("embedded texture '{}' cannot be decoded ({}); using a checker", label, d.unreadable);
+    return checkerImage();
 }
 
 }  // namespace penumbra::scene
