@@ -5,4 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
+# Bare `penumbra` on a terminal with a display asks seed 002's menu; this command opens the
+# default scene directly.
+if [ $# -eq 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then set -- view; fi
 exec ./build/penumbra "$@"

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     app::addEglPlatform(*rend, job.eglPlatform);
     app::addSeedChoices(*rend, renderSeed);
     std::string renderController;  // -m on render: accepted for batch files that also open windows
-    
+
     auto* menu = cli.add_subcommand("menu", "seed 002's text menu: scene, technique, camera manipulator (and LiSPSM's tiles), then the window");
     bool menuPrintOnly = false;
     menu->add_flag("--print", menuPrintOnly, "print the chosen options and the equal command line instead of opening the window");
