@@ -6,6 +6,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 # Bare `penumbra` on a terminal with a display asks seed 002's menu; this command opens the
-# default scene directly.
-if [ $# -eq 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then set -- view; fi
+# default scene directly (stdin not a terminal: no menu; the window or, with no display, headless).
+if [ $# -eq 0 ]; then exec ./build/penumbra </dev/null; fi
 exec ./build/penumbra "$@"
