@@ -165,6 +165,11 @@ static Decoded decode(const std::uint8_t* data, std::size_t bytes, const std::st
         d.unreadable = reason && *reason ? reason : "unknown reason";
         return d;
     }
+    if (w <= 0 || h <= 0) {  // stb "decodes" a BMP of height 0 (found by the image fuzzer)
+        stbi_image_free(pixels);
+        d.unreadable = "it has no pixels (" + std::to_string(w) + "x" + std::to_string(h) + ")";
+        return d;
+    }
     d.ok = true;
     d.image = fromStb(pixels, w, h, label);
     return d;
