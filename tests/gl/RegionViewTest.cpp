@@ -8,6 +8,7 @@
 
 #include "render/Offscreen.h"
 #include "render/RegionView.h"
+#include "scene/io/SceneFile.h"
 #include "util/Error.h"
 
 namespace penumbra::test {
@@ -108,6 +109,43 @@ TEST(RegionView, EachRegionHasItsTechniquesPixelsAndEdges) {
     EXPECT_LE(hardWidth, 2) << "region sharp: hard shadow edge";
     EXPECT_GE(softWidth, 4) << "region soft: wide PCF penumbra";
     EXPECT_NE(sharp, soft) << "the two techniques must differ for the test to mean anything";
+}
+
+// Seed 002's street itself: seen from above, each block's pixels are those of the block's own
+// technique and map resolution (256 .. 4096, soft PCF, LiSPSM) rendered alone, and the blocks
+// really differ from one another.
+TEST(RegionView, EveryBlockOfTheStreetIsDrawnByItsRegion) {
+    scene::Scene s = scene::io::loadScene(std::filesystem::path(PENUMBRA_TEST_DATA) / "../../scenes/street.json");
+    ASSERT_EQ(s.regions.size(), 7u);
+    render::RegionView view(s, {});
+    const int w = 64, h = 64;
+    render::OffscreenTarget target(w, h);
+    for (std::size_t k = 0; k < s.regions.size(); ++k) {
+        const float x = 12.0f * static_cast<float>(k) + 6.0f;  // the block's centre (scripts/make_demo_scenes.py)
+        s.camera.position = {x, 7.0f, 0.0f};
+        s.camera.target = {x, 0.0f, -0.5f};
+        s.camera.up = {0, 0, -1};
+        s.camera.fovDeg = 60.0f;  // the ground within about +-4 m of the centre: this block only
+        view.render(0.0f, s.camera, w, h, target.framebuffer());
+        const auto pixels = target.readRgba8();
+        render::Renderer alone(s, render::regionOptions({}, s.regions[k]));
+        render::OffscreenTarget aloneTarget(w, h);
+        alone.render(0.0f, s.camera, w, h, aloneTarget.framebuffer());
+        const auto expected = aloneTarget.readRgba8();
+        // The neighbouring region's technique or resolution draws this view differently, so the
+        // comparison above can tell regions apart.
+        render::Renderer other(s, render::regionOptions({}, s.regions[(k + 1) % s.regions.size()]));
+        other.render(0.0f, s.camera, w, h, aloneTarget.framebuffer());
+        const auto otherPixels = aloneTarget.readRgba8();
+        int differing = 0, differingFromOther = 0;
+        for (std::size_t i = 0; i < pixels.size(); ++i) {
+            if (i % 4 == 3) continue;
+            differing += pixels[i] != expected[i];
+            differingFromOther += pixels[i] != otherPixels[i];
+        }
+        EXPECT_EQ(differing, 0) << s.regions[k].name << ": channel values that differ from its technique alone";
+        EXPECT_GT(differingFromOther, 20) << s.regions[k].name << ": must differ from " << s.regions[(k + 1) % s.regions.size()].name;
+    }
 }
 
 TEST(RegionView, SceneFilesNameUnknownRegionsAndTechniques) {
