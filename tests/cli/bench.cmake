@@ -93,7 +93,7 @@ endif()
 # The page in headless Chromium: a harness page loads it in a frame and reports what it finds.
 find_program(CHROMIUM NAMES chromium chromium-browser REQUIRED)
 execute_process(
-  COMMAND timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --allow-file-access-from-files
+  COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --allow-file-access-from-files
           --enable-logging=stderr --v=0 --virtual-time-budget=20000 --dump-dom
           "file://${CMAKE_CURRENT_LIST_DIR}/report_check.html?report=file://${OUT}/report.html"
   RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log)
@@ -129,6 +129,6 @@ if(consoleErrors)
   message(FATAL_ERROR "report.html logged to the console:\n${consoleErrors}")
 endif()
 # A screenshot to look at (not asserted on).
-execute_process(COMMAND timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --window-size=1400,2200
+execute_process(COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --window-size=1400,2200
                         "--screenshot=${OUT}/report_screenshot.png" "file://${OUT}/report.html"
                 OUTPUT_QUIET ERROR_QUIET)

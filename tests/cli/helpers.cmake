@@ -22,3 +22,19 @@ function(expect_files dir)
     endif()
   endforeach()
 endfunction()
+
+# The command that runs penumbra in a window under Xvfb: xvfb-run -a -s "-screen 0 SCREEN" penumbra.
+# Under scripts/test.sh --sanitize, LD_PRELOAD (gcc's ASan runtime and Mesa's driver) is meant for
+# penumbra alone: xvfb-run's helpers (xauth, Xvfb) are not instrumented and abort under it.
+function(penumbra_in_xvfb out_var screen)
+  find_program(XVFB_RUN xvfb-run REQUIRED)
+  if(NOT "$ENV{LD_PRELOAD}" STREQUAL "")
+    set(${out_var} env -u LD_PRELOAD "${XVFB_RUN}" -a -s "-screen 0 ${screen}" env "LD_PRELOAD=$ENV{LD_PRELOAD}" "${PENUMBRA}"
+        PARENT_SCOPE)
+  else()
+    set(${out_var} "${XVFB_RUN}" -a -s "-screen 0 ${screen}" "${PENUMBRA}" PARENT_SCOPE)
+  endif()
+endfunction()
+
+# A third-party program (chromium, ...) without the sanitizer preload (see penumbra_in_xvfb).
+set(WITHOUT_PRELOAD env -u LD_PRELOAD)

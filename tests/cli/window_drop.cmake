@@ -3,10 +3,10 @@
 # old scene drawing (the run goes on to its screenshot and exits 0) with the error named; a model
 # must load.
 include(${CMAKE_CURRENT_LIST_DIR}/helpers.cmake)
-find_program(XVFB_RUN xvfb-run REQUIRED)
+penumbra_in_xvfb(in_window 1024x768x24)
 # Runs the window in `dir` with ARGN; `log` gets stdout and stderr together.
 function(view_with dir log)
-  run_penumbra("${dir}" out ${XVFB_RUN} -a -s "-screen 0 1024x768x24" "${PENUMBRA}" view ${ARGN} --exit-after 2)
+  run_penumbra("${dir}" out ${in_window} view ${ARGN} --exit-after 2)
   set(${log} "${out_and_errors}" PARENT_SCOPE)
 endfunction()
 view_with("${OUT}/broken" out --drop "${DATA}/malformed.json")

@@ -3,13 +3,13 @@
 # the finished reference. With --heat-map it shows |technique - reference| instead: a different
 # picture of the same frame.
 include(${CMAKE_CURRENT_LIST_DIR}/helpers.cmake)
-find_program(XVFB_RUN xvfb-run REQUIRED)
+penumbra_in_xvfb(in_window 1024x768x24)
 foreach(mode reference heat)
   set(flags --reference)
   if(mode STREQUAL "heat")
     list(APPEND flags --heat-map)
   endif()
-  run_penumbra("${OUT}/${mode}" out ${XVFB_RUN} -a -s "-screen 0 1024x768x24" "${PENUMBRA}" view ${flags} --exit-after 2)
+  run_penumbra("${OUT}/${mode}" out ${in_window} view ${flags} --exit-after 2)
   if(NOT EXISTS "${OUT}/${mode}/screenshot_000.png")
     message(FATAL_ERROR "${mode}: no screenshot of the finished frame")
   endif()

@@ -3,8 +3,8 @@
 # step once, one of them at 8192x8192) it
 # must exit cleanly and leave its last frame as a screenshot.
 include(${CMAKE_CURRENT_LIST_DIR}/helpers.cmake)
-find_program(XVFB_RUN xvfb-run REQUIRED)
-run_penumbra("${OUT}" out ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" "${PENUMBRA}" view --storm --exit-after 7)
+penumbra_in_xvfb(in_window 1280x1024x24)
+run_penumbra("${OUT}" out ${in_window} view --storm --exit-after 7)
 file(GLOB shots "${OUT}/*.png")
 if(NOT shots)
   message(FATAL_ERROR "the storm left no screenshot of its last frame")
