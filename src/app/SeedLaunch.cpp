@@ -1,6 +1,5 @@
 #include "app/SeedLaunch.h"
 
-#include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
 
 #include <istream>
@@ -88,10 +87,9 @@ void applySeedChoices(const SeedChoices& c, std::filesystem::path& scene, render
     check(c.tilesAcross, 4, "-cw");
     check(c.tilesDown, 4, "-ch");
     if (c.scene) scene = paths::dataRoot() / "scenes" / kSceneFiles[c.scene - 1];
-    if (c.technique == 6) {
-        if (scene::io::loadScene(scene.empty() ? scene::io::defaultScenePath() : scene).regions.empty())
-            throw std::invalid_argument("-sh 6 (a combination of techniques) needs a scene with regions: the street, -sc 3");
-        render.technique.clear();  // the scene's regions decide
+    if (c.technique == 6) {  // the scene's regions decide; checked once the scene is loaded
+        render.technique.clear();
+        render.requireRegions = true;
     } else if (c.technique) {
         render.technique = kTechniques[c.technique - 1];
     }

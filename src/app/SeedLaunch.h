@@ -33,7 +33,8 @@ void addSeedChoices(CLI::App& command, SeedChoices& choices);
 
 // Applies the choices to the named options: the scene file, the technique (and LiSPSM's cols and
 // rows), the camera controller. Throws std::invalid_argument for a combination the seed does not
-// offer (6 on a scene without regions, tiles without LiSPSM).
+// offer (tiles without LiSPSM); 6 on a scene without regions fails where the scene is loaded
+// (RenderOptions::requireRegions).
 void applySeedChoices(const SeedChoices& choices, std::filesystem::path& scene, render::RenderOptions& render,
                       std::string& controller);
 

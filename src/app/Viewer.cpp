@@ -99,6 +99,11 @@ void parameterWidget(const shadows::Parameter& p) {
 
 // The panel: docked on the left, at most a third of the window wide, its sections collapsed
 // except the technique's, so the scene stays visible (h hides it).
+// The GPU times of what is drawn: every region's renderer together when drawing by region.
+render::PassTimes shownTimes(const render::Renderer& renderer, const render::RegionView* regions, const ViewerState& state) {
+    return state.byRegion && regions ? regions->lastTimes() : renderer.lastTimes();
+}
+
 void drawPanel(render::Renderer& renderer, const render::RegionView* regions, ViewerState& state, scene::CameraController& controller) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(display.x / 3.0f, 340.0f * ImGui::GetIO().FontGlobalScale);
@@ -109,7 +114,7 @@ void drawPanel(render::Renderer& renderer, const render::RegionView* regions, Vi
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 7.0f);  // labels keep 7 em on the right
     // By region: every region's renderer together (its own maps, its own passes).
     const bool byRegion = state.byRegion && regions;
-    const render::PassTimes t = byRegion ? regions->lastTimes() : renderer.lastTimes();
+    const render::PassTimes t = shownTimes(renderer, regions, state);
     const std::size_t shadowBytes = byRegion ? regions->shadowMemoryBytes() : renderer.shadowMemoryBytes();
     ImGui::Text("%.1f FPS, GPU %.1f ms", state.fps(), t.totalMs());
     ImGui::Text("shadow %.1f | opaque %.1f ms", t.shadowMs, t.opaqueMs);
@@ -361,6 +366,7 @@ int runViewer(const ViewerOptions& opts) {
             // Load and build everything first: a broken file changes nothing but the message.
             try {
                 auto next = std::make_unique<scene::Scene>(scene::io::loadScene(file));
+                const bool nextByRegion = render::drawsByRegion(opts.render, *next);
                 render::RenderOptions options = rendererPtr->options();
                 auto nextRenderer = std::make_unique<render::Renderer>(*next, options);
                 std::unique_ptr<render::Renderer> nextRight;
@@ -370,7 +376,7 @@ int runViewer(const ViewerOptions& opts) {
                 rendererPtr = std::move(nextRenderer);
                 right = std::move(nextRight);
                 regions.reset();
-                state.byRegion = !next->regions.empty() && !right;
+                state.byRegion = nextByRegion && !right;
                 scenePtr = std::move(next);
                 pivot = scenePtr->boundsAt(0.0f).center();
                 state.time = 0.0f;
@@ -494,8 +500,7 @@ int runViewer(const ViewerOptions& opts) {
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
             ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(),
-                        (state.byRegion && regions ? regions->lastTimes() : renderer.lastTimes()).totalMs());
+            ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(), shownTimes(renderer, regions.get(), state).totalMs());
             ImGui::End();
         }
         ImGui::Render();

@@ -27,6 +27,10 @@ struct PassTimes {
     double totalMs() const { return shadowMs + opaqueMs + translucentMs + postMs; }
     double& operator[](Pass p);
     double operator[](Pass p) const;
+    PassTimes& operator+=(const PassTimes& other) {
+        for (int p = 0; p < kPassCount; ++p) (*this)[Pass(p)] += other[Pass(p)];
+        return *this;
+    }
 };
 
 // One finished frame: GPU query times, and (calibration mode only) glFinish wall-clock times.

@@ -13,23 +13,32 @@ RenderOptions regionOptions(const RenderOptions& base, const scene::Region& regi
     return o;
 }
 
+bool drawsByRegion(const RenderOptions& options, const scene::Scene& scene) {
+    if (options.requireRegions && scene.regions.empty())
+        throw std::invalid_argument(scene.source.string() +
+                                    ": -sh 6 (a combination of techniques, one per region) needs a scene with 'regions', "
+                                    "such as the street (-sc 3)");
+    return !scene.regions.empty() && options.technique.empty();
+}
+
 RegionView::RegionView(scene::Scene& scene, const RenderOptions& base) {
-    const std::size_t objects = scene.objects.size();
-    std::vector<bool> unassigned(objects);
-    for (std::size_t i = 0; i < objects; ++i) unassigned[i] = scene.objects[i].region < 0;
+    // The objects of region `r` (-1: of none), as Renderer::setReceivers takes them.
+    const auto objectsOf = [&scene](int r) {
+        std::vector<bool> own(scene.objects.size());
+        for (std::size_t i = 0; i < own.size(); ++i) own[i] = scene.objects[i].region == r;
+        return own;
+    };
     base_ = std::make_unique<Renderer>(scene, base);
-    base_->setReceivers(unassigned, false);
+    base_->setReceivers(objectsOf(-1), false);
     for (std::size_t r = 0; r < scene.regions.size(); ++r) {
         const scene::Region& region = scene.regions[r];
-        std::vector<bool> own(objects);
-        for (std::size_t i = 0; i < objects; ++i) own[i] = scene.objects[i].region == static_cast<int>(r);
         try {
             regions_.push_back(std::make_unique<Renderer>(scene, regionOptions(base, region)));
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument(scene.source.string() + ": regions[" + std::to_string(r) + "] '" + region.name +
                                         "': " + e.what());
         }
-        regions_.back()->setReceivers(std::move(own), true);
+        regions_.back()->setReceivers(objectsOf(static_cast<int>(r)), true);
     }
 }
 
@@ -38,22 +47,15 @@ void RegionView::render(float time, const scene::Camera& camera, int width, int 
     for (auto& region : regions_) region->render(time, camera, width, height, target);
 }
 
-static void add(PassTimes& sum, const PassTimes& t) {
-    sum.shadowMs += t.shadowMs;
-    sum.opaqueMs += t.opaqueMs;
-    sum.translucentMs += t.translucentMs;
-    sum.postMs += t.postMs;
-}
-
 PassTimes RegionView::waitForTimes() {
     PassTimes sum = base_->waitForTimes();
-    for (auto& region : regions_) add(sum, region->waitForTimes());
+    for (auto& region : regions_) sum += region->waitForTimes();
     return sum;
 }
 
 PassTimes RegionView::lastTimes() const {
     PassTimes sum = base_->lastTimes();
-    for (const auto& region : regions_) add(sum, region->lastTimes());
+    for (const auto& region : regions_) sum += region->lastTimes();
     return sum;
 }
 

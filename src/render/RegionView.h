@@ -41,10 +41,9 @@ private:
 };
 
 // Whether a frame of `scene` with `options` is drawn by regions: the scene has them and no
-// technique is forced on the whole scene (--technique).
-inline bool drawsByRegion(const RenderOptions& options, const scene::Scene& scene) {
-    return !scene.regions.empty() && options.technique.empty();
-}
+// technique is forced on the whole scene (--technique). Throws std::invalid_argument naming the
+// scene when `options.requireRegions` and it has none.
+bool drawsByRegion(const RenderOptions& options, const scene::Scene& scene);
 
 // The options region `region` of `scene` is drawn with: `base` with the region's technique,
 // resolution and parameters.

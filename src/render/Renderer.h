@@ -50,6 +50,9 @@ struct RenderOptions {
     // (trilinear) by default, as bgfx, Filament and osg sample: measured on llvmpipe (default
     // scene, 1280x720) 8x doubled the opaque pass (40 -> 88 ms) and the shadow pass (17 -> 30 ms).
     int anisotropy = 1;
+    // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
+    // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
+    bool requireRegions = false;
 };
 
 // The technique `options` asks for on `scene`: its own, else the scene's, else "hard".

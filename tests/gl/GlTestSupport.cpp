@@ -45,6 +45,13 @@ Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int
     return Frame{width, height, renderer.readLinear()};
 }
 
+std::vector<std::uint8_t> renderRgba8(scene::Scene& scene, const render::RenderOptions& options, int width, int height) {
+    render::Renderer renderer(scene, options);
+    render::OffscreenTarget target(width, height);
+    renderer.render(0.0f, scene.camera, width, height, target.framebuffer());
+    return target.readRgba8();
+}
+
 Ray pixelRay(const scene::Camera& camera, int x, int y, int width, int height) {
     const glm::mat4 inv = glm::inverse(camera.projection(float(width) / float(height)) * camera.view());
     const glm::vec2 ndc{(x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f};

@@ -28,6 +28,10 @@ scene::Scene sceneFromJson(const std::string& json);
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light = 0, int width = 256, int height = 256,
                     const std::string& technique = "hard", const shadows::ParameterValues& parameters = {});
 
+// The sRGB8 RGBA bytes (row 0 = bottom) of `scene` at time 0 from its camera, rendered alone
+// with `options` (the reference against which split and region views are compared).
+std::vector<std::uint8_t> renderRgba8(scene::Scene& scene, const render::RenderOptions& options, int width, int height);
+
 // World-space ray through the centre of pixel (x, y) (y up) of the scene camera.
 struct Ray {
     glm::vec3 origin, direction;

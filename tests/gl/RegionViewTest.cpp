@@ -28,13 +28,6 @@ const char* kScene = R"({
                { "shape": "plane", "size": [6, 6], "position": [3, 0, 0], "region": "soft" },
                { "shape": "box", "size": [1, 1, 2], "position": [4, 0.5, 0], "region": "soft" } ] })";
 
-std::vector<std::uint8_t> renderAlone(scene::Scene& s, const render::RenderOptions& options) {
-    render::Renderer renderer(s, options);
-    render::OffscreenTarget target(kWidth, kHeight);
-    renderer.render(0.0f, s.camera, kWidth, kHeight, target.framebuffer());
-    return target.readRgba8();
-}
-
 // Where the ray of pixel (x, y) meets the ground plane y = 0.
 glm::vec3 groundPoint(const scene::Camera& camera, int x, int y) {
     const Ray ray = pixelRay(camera, x, y, kWidth, kHeight);
@@ -69,9 +62,9 @@ TEST(RegionView, EachRegionHasItsTechniquesPixelsAndEdges) {
     EXPECT_EQ(view.region(1).technique().name(), "pcf-poisson16");
     EXPECT_EQ(view.region(1).options().shadowResolution, 256);
 
-    const auto none = renderAlone(s, {.technique = "none"});
-    const auto sharp = renderAlone(s, render::regionOptions({}, s.regions[0]));
-    const auto soft = renderAlone(s, render::regionOptions({}, s.regions[1]));
+    const auto none = renderRgba8(s, {.technique = "none"}, kWidth, kHeight);
+    const auto sharp = renderRgba8(s, render::regionOptions({}, s.regions[0]), kWidth, kHeight);
+    const auto soft = renderRgba8(s, render::regionOptions({}, s.regions[1]), kWidth, kHeight);
     render::OffscreenTarget target(kWidth, kHeight);
     view.render(0.0f, s.camera, kWidth, kHeight, target.framebuffer());
     const auto pixels = target.readRgba8();
@@ -128,15 +121,10 @@ TEST(RegionView, EveryBlockOfTheStreetIsDrawnByItsRegion) {
         s.camera.fovDeg = 60.0f;  // the ground within about +-4 m of the centre: this block only
         view.render(0.0f, s.camera, w, h, target.framebuffer());
         const auto pixels = target.readRgba8();
-        render::Renderer alone(s, render::regionOptions({}, s.regions[k]));
-        render::OffscreenTarget aloneTarget(w, h);
-        alone.render(0.0f, s.camera, w, h, aloneTarget.framebuffer());
-        const auto expected = aloneTarget.readRgba8();
+        const auto expected = renderRgba8(s, render::regionOptions({}, s.regions[k]), w, h);
         // The neighbouring region's technique or resolution draws this view differently, so the
         // comparison above can tell regions apart.
-        render::Renderer other(s, render::regionOptions({}, s.regions[(k + 1) % s.regions.size()]));
-        other.render(0.0f, s.camera, w, h, aloneTarget.framebuffer());
-        const auto otherPixels = aloneTarget.readRgba8();
+        const auto otherPixels = renderRgba8(s, render::regionOptions({}, s.regions[(k + 1) % s.regions.size()]), w, h);
         int differing = 0, differingFromOther = 0;
         for (std::size_t i = 0; i < pixels.size(); ++i) {
             if (i % 4 == 3) continue;

@@ -9,15 +9,6 @@
 namespace penumbra::test {
 namespace {
 
-std::vector<std::uint8_t> renderAlone(scene::Scene& s, const std::string& technique, int w, int h) {
-    render::RenderOptions options;
-    options.technique = technique;
-    render::Renderer renderer(s, options);
-    render::OffscreenTarget target(w, h);
-    renderer.render(0.0f, s.camera, w, h, target.framebuffer());
-    return target.readRgba8();
-}
-
 TEST(SplitView, EachSideHasItsTechniquesPixels) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 7, 6], "target": [0, 0, 0] },
@@ -25,7 +16,7 @@ TEST(SplitView, EachSideHasItsTechniquesPixels) {
       "objects": [ { "shape": "plane", "size": [12, 12] },
                    { "shape": "box", "position": [-2, 1, 0] }, { "shape": "box", "position": [2, 1, 0] } ] })");
     const int w = 96, h = 64;
-    const auto hard = renderAlone(s, "hard", w, h), soft = renderAlone(s, "pcf-poisson16", w, h);
+    const auto hard = renderRgba8(s, {.technique = "hard"}, w, h), soft = renderRgba8(s, {.technique = "pcf-poisson16"}, w, h);
     ASSERT_NE(hard, soft) << "the two techniques must differ somewhere for the test to mean anything";
 
     render::RenderOptions left, right;

@@ -90,6 +90,13 @@ public:
         return {f[0], f[1], f[2]};
     }
 
+    // A shadow-map resolution: a number within 16..16384 texels.
+    int resolution(const json& obj, const char* key, const std::string& path, int fallback) const {
+        const float v = number(obj, key, path, static_cast<float>(fallback));
+        if (!(v >= 16 && v <= 16384)) fail(path, key, std::string("'") + key + "' must be within 16..16384");
+        return static_cast<int>(v);
+    }
+
     std::string string(const json& obj, const char* key, const std::string& path, const std::string& fallback) const {
         if (!obj.contains(key)) return fallback;
         if (!obj.at(key).is_string()) fail(path, key, std::string("'") + key + "' must be a string");
@@ -175,9 +182,7 @@ ShadowSettings readShadow(const Reader& r, const json& j, const std::string& p) 
         if (!j["enabled"].is_boolean()) r.fail(p, "enabled", "'enabled' must be true or false");
         s.enabled = j["enabled"].get<bool>();
     }
-    const float resolution = r.number(j, "resolution", p, static_cast<float>(s.resolution));
-    if (!(resolution >= 16 && resolution <= 16384)) r.fail(p, "resolution", "'resolution' must be within 16..16384");
-    s.resolution = static_cast<int>(resolution);
+    s.resolution = r.resolution(j, "resolution", p, s.resolution);
     s.bias = r.number(j, "bias", p, s.bias);
     s.slopeBias = r.number(j, "slope_bias", p, s.slopeBias);
     s.normalOffset = r.number(j, "normal_offset", p, s.normalOffset);
@@ -346,10 +351,7 @@ void readRegion(const Reader& r, const json& j, const std::string& p, Scene& sce
     for (const Region& other : scene.regions)
         if (other.name == g.name) r.fail(p, "name", "two regions are named '" + g.name + "'");
     g.technique = r.string(j, "technique", p, "");
-    const float resolution = r.number(j, "shadow_resolution", p, 0.0f);
-    if (j.contains("shadow_resolution") && !(resolution >= 16 && resolution <= 16384))
-        r.fail(p, "shadow_resolution", "'shadow_resolution' must be within 16..16384");
-    g.shadowResolution = static_cast<int>(resolution);
+    if (j.contains("shadow_resolution")) g.shadowResolution = r.resolution(j, "shadow_resolution", p, 0);
     if (j.contains("parameters")) {
         const json& params = j["parameters"];
         if (!params.is_object()) r.fail(p, "parameters", "'parameters' must be an object of name: value");
