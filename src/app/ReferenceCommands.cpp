@@ -81,8 +81,9 @@ int runCompare(const ReportJob& job) {
 
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
-    std::printf("\n%-14s %9s %9s %11s %9s %10s %10s %10s\n", "technique", "RMSE", "wrong %", "colour err",
-                "noise", "shadow ms", "frame ms", "MiB");
+    const bool motion = job.motionFrames > 1;
+    std::printf("\n%-14s %9s %9s %11s %9s %10s %10s %10s%s\n", "technique", "RMSE", "wrong %", "colour err",
+                "noise", "shadow ms", "frame ms", "MiB", motion ? "  temporal  crawl %" : "");
     for (const auto& name : job.techniques) {
         const TechniqueScore sc = cmp.evaluate(name, job.render.shadowResolution, job.timedFrames, job.render.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
@@ -90,12 +91,22 @@ int runCompare(const ReportJob& job) {
         util::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
         util::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
-        std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f\n", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
+        std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
                     sc.colourError, sc.noise, sc.shadowMs, sc.totalMs, mib);
+        json moving = nullptr;
+        if (motion) {
+            const MotionScore m = cmp.evaluateMotion(name, job.render.shadowResolution, job.motionFrames,
+                                                     job.motionPixelsPerFrame, job.render.parameters);
+            std::printf(" %9.4f %8.3f", m.temporalError, 100.0 * m.crawlShare);
+            moving = {{"frames", m.frames}, {"pixels_per_frame", job.motionPixelsPerFrame},
+                      {"temporal_error", m.temporalError}, {"crawl_share", m.crawlShare}, {"compared", m.pixels}};
+        }
+        std::printf("\n");
         rows.push_back({{"technique", name}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
                         {"colour_error", sc.colourError}, {"noise", sc.noise}, {"compared_pixels", sc.pixels},
                         {"coloured_pixels", sc.colouredPixels}, {"shadow_ms", sc.shadowMs}, {"frame_ms", sc.totalMs},
-                        {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"}});
+                        {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"},
+                        {"motion", moving}});
     }
     // Side by side: cells of (image over heat map) at half size, five to a row; the reference's
     // cell holds the reference image over a blank.

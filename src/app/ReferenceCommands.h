@@ -20,6 +20,8 @@ struct ReportJob {
     std::vector<std::string> techniques;
     render::RenderOptions render;
     int timedFrames = 3;
+    int motionFrames = 0;                // > 1: also score a slow pan (Comparison::evaluateMotion)
+    float motionPixelsPerFrame = 0.5f;
 };
 
 // Writes reference.png, visibility_<i>.png per light and reference.json. Returns exit code.

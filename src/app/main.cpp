@@ -119,6 +119,11 @@ int main(int argc, char** argv) {
     cmp->add_option("--techniques", techniqueList, "comma-separated technique names (default: all)");
     app::addRenderOptions(*cmp, report.render, {.technique = false, .overlay = false, .transparency = false});
     cmp->add_option("--timed-frames", report.timedFrames, "frames timed per technique (default 3)")->check(CLI::Range(1, 1000));
+    cmp->add_option("--motion-frames", report.motionFrames,
+                    "also pan the camera over N frames at a fixed scene time and score shadows' frame-to-frame change (0: off)")
+        ->check(CLI::Range(0, 1000));
+    cmp->add_option("--motion-speed", report.motionPixelsPerFrame, "the pan's speed at the camera target, pixels per frame (default 0.5)")
+        ->check(CLI::Range(0.0f, 1000.0f));
 
     auto* benchCmd = cli.add_subcommand("bench", "measure speed and memory: frames back to back, report in bench.json, bench.csv, report.html");
     app::BenchJob bench;

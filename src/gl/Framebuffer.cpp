@@ -45,6 +45,15 @@ Framebuffer Framebuffer::colourAndDepth(const Texture& colour, const Texture& de
     return f;
 }
 
+Framebuffer Framebuffer::colourOnly(const Texture& colour, int layer, const std::string& what) {
+    Framebuffer f;
+    if (layer >= 0) f.attachLayer(GL_COLOR_ATTACHMENT0, colour, layer);
+    else f.attach(GL_COLOR_ATTACHMENT0, colour);
+    f.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    f.checkComplete(what);
+    return f;
+}
+
 void Framebuffer::beginDepthPass(int width, int height) const {
     bind();
     glViewport(0, 0, width, height);

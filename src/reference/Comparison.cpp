@@ -3,22 +3,32 @@
 #include "render/Offscreen.h"
 #include "util/Error.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace penumbra::reference {
 
 using render::OutputMode;
 
-std::vector<glm::vec3> Comparison::capture(render::Renderer& renderer, OutputMode mode, int light) {
+std::vector<glm::vec4> Comparison::captureFrom(render::Renderer& renderer, const scene::Camera& camera,
+                                               OutputMode mode, int light) {
     renderer.setOutputMode(mode, light);
     render::OffscreenTarget target(width_, height_);
-    renderer.render(time_, scene_.camera, width_, height_, target.framebuffer());
+    renderer.render(time_, camera, width_, height_, target.framebuffer());
     const std::vector<float> rgba = renderer.readLinear();
-    std::vector<glm::vec3> out(static_cast<std::size_t>(width_) * height_);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
+    std::vector<glm::vec4> out(static_cast<std::size_t>(width_) * height_);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]};
+    return out;
+}
+
+std::vector<glm::vec3> Comparison::capture(render::Renderer& renderer, OutputMode mode, int light) {
+    const std::vector<glm::vec4> rgba = captureFrom(renderer, scene_.camera, mode, light);
+    std::vector<glm::vec3> out(rgba.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = glm::vec3(rgba[i]);
     if (mode == OutputMode::WorldPosition)
-        for (std::size_t i = 0; i < out.size(); ++i) points_.covered[i] = rgba[4 * i + 3] > 0.5f;
+        for (std::size_t i = 0; i < out.size(); ++i) points_.covered[i] = rgba[i].a > 0.5f;
     return out;
 }
 
@@ -104,6 +114,111 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
     score.colourError = error.colourError();
     score.pixels = error.pixels();
     score.colouredPixels = error.colouredPixels();
+    return score;
+}
+
+namespace {
+
+// One frame of a pan: where each pixel's surface is (a > 0.5: covered) and, per light, its
+// visibility where the light reaches it unshadowed (NaN elsewhere).
+struct MotionFrame {
+    glm::mat4 viewProj;
+    std::vector<glm::vec4> position;
+    std::vector<std::vector<glm::vec3>> visibility;
+};
+
+constexpr float kNotLit = std::numeric_limits<float>::quiet_NaN();
+constexpr float kCrawlThreshold = 8.0f / 255.0f;
+
+}  // namespace
+
+MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowResolution, int frames,
+                                       float pixelsPerFrame, const shadows::ParameterValues& parameters) {
+    render::RenderOptions options;
+    options.technique = technique;
+    options.shadowResolution = shadowResolution;
+    options.parameters = parameters;
+    render::Renderer renderer(scene_, options);
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    const scene::Camera& start = scene_.camera;
+    const glm::vec3 forward = glm::normalize(start.target - start.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, start.up));
+    // World size of one pixel at the target's distance.
+    const float pixel = 2.0f * glm::length(start.target - start.position) *
+                        std::tan(glm::radians(start.fovDeg) * 0.5f) / static_cast<float>(height_);
+
+    auto renderFrame = [&](int k) {
+        scene::Camera camera = start;
+        const glm::vec3 shift = right * (pixel * pixelsPerFrame * static_cast<float>(k));
+        camera.position += shift;
+        camera.target += shift;
+        MotionFrame f{camera.projection(aspect) * camera.view(),
+                      captureFrom(renderer, camera, OutputMode::WorldPosition, 0), {}};
+        for (std::size_t l = 0; l < scene_.lights.size(); ++l) {
+            const auto reach = captureFrom(renderer, camera, OutputMode::Contribution, static_cast<int>(l));
+            const auto seen = captureFrom(renderer, camera, OutputMode::Visibility, static_cast<int>(l));
+            std::vector<glm::vec3> v(seen.size(), glm::vec3(kNotLit));
+            for (std::size_t i = 0; i < v.size(); ++i)
+                if (f.position[i].a > 0.5f && glm::max(glm::max(reach[i].r, reach[i].g), reach[i].b) > 1e-5f)
+                    v[i] = glm::vec3(seen[i]);
+            f.visibility.push_back(std::move(v));
+        }
+        return f;
+    };
+
+    MotionScore score;
+    score.frames = frames;
+    double squared = 0;
+    std::size_t crawling = 0;
+    MotionFrame before = renderFrame(0);
+    for (int k = 1; k < frames; ++k) {
+        MotionFrame now = renderFrame(k);
+        for (int y = 0; y < height_; ++y)
+            for (int x = 0; x < width_; ++x) {
+                const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+                if (now.position[i].a <= 0.5f) continue;
+                const glm::vec3 p(now.position[i]);
+                const glm::vec4 clip = before.viewProj * glm::vec4(p, 1.0f);
+                if (clip.w <= 0.0f) continue;
+                // Pixel centres at (x + 0.5, y + 0.5): the 2x2 around the reprojected point.
+                const glm::vec2 at = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width_, height_) - 0.5f;
+                const glm::ivec2 corner = glm::ivec2(glm::floor(at));
+                if (corner.x < 0 || corner.y < 0 || corner.x + 1 >= width_ || corner.y + 1 >= height_) continue;
+                // The same surface: all four neighbours within a few pixels' size of the point
+                // (no disocclusion, no silhouette).
+                const float tolerance = 4.0f * pixel * std::max(1.0f, clip.w / glm::length(start.target - start.position));
+                std::array<std::size_t, 4> n{};
+                bool same = true;
+                for (int c = 0; c < 4; ++c) {
+                    n[c] = static_cast<std::size_t>(corner.y + (c >> 1)) * width_ + corner.x + (c & 1);
+                    same = same && before.position[n[c]].a > 0.5f &&
+                           glm::length(glm::vec3(before.position[n[c]]) - p) < tolerance;
+                }
+                if (!same) continue;
+                for (std::size_t l = 0; l < now.visibility.size(); ++l) {
+                    const glm::vec3 v = now.visibility[l][i];
+                    if (std::isnan(v.r)) continue;
+                    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+                    bool lit = true;
+                    for (std::size_t c : n) {
+                        const glm::vec3 w = before.visibility[l][c];
+                        lit = lit && !std::isnan(w.r);
+                        lo = glm::min(lo, w);
+                        hi = glm::max(hi, w);
+                    }
+                    if (!lit) continue;
+                    const glm::vec3 outside = glm::max(lo - v, glm::max(v - hi, glm::vec3(0.0f)));
+                    squared += glm::dot(outside, outside) / 3.0;
+                    crawling += glm::max(glm::max(outside.r, outside.g), outside.b) > kCrawlThreshold ? 1 : 0;
+                    ++score.pixels;
+                }
+            }
+        before = std::move(now);
+    }
+    if (score.pixels) {
+        score.temporalError = std::sqrt(squared / static_cast<double>(score.pixels));
+        score.crawlShare = static_cast<double>(crawling) / static_cast<double>(score.pixels);
+    }
     return score;
 }
 

@@ -26,6 +26,19 @@ struct TechniqueScore {
     std::vector<float> maxError;                     // per pixel, over lights
 };
 
+// Shadows under a slow camera pan over the static scene (its time fixed): the truth does not
+// change, so every change of a surface point's visibility from one frame to the next is error
+// (shimmer of a refitted map, crawling of a stochastic pattern).
+struct MotionScore {
+    int frames = 0;
+    // RMS, over surface points seen in consecutive frames, of how far a point's visibility leaves
+    // the range of the 2x2 pixels it reprojects to in the frame before; resampling a still
+    // shadow stays inside that range, so a still image scores 0.
+    double temporalError = 0;
+    double crawlShare = 0;  // share of those points whose visibility left the range by > 8/255
+    std::size_t pixels = 0;
+};
+
 class Comparison {
 public:
     // Captures the G-buffer, ambient term and each light's unshadowed contribution.
@@ -43,6 +56,11 @@ public:
     TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames,
                             const shadows::ParameterValues& parameters = {});
 
+    // `frames` frames of `technique` while the camera pans sideways by `pixelsPerFrame` pixels
+    // (measured at its target) per frame; no reference is needed.
+    MotionScore evaluateMotion(const std::string& technique, int shadowResolution, int frames, float pixelsPerFrame,
+                               const shadows::ParameterValues& parameters = {});
+
     // The frame shaded with the given per-light visibility (the reference's or a technique's):
     // ambient + sum(contribution * visibility), fog, background; RGBA8 sRGB top row first.
     std::vector<std::uint8_t> shade(const std::vector<std::vector<glm::vec3>>& visibility) const;
@@ -56,6 +74,8 @@ public:
 
 private:
     std::vector<glm::vec3> capture(render::Renderer& renderer, render::OutputMode mode, int light);
+    std::vector<glm::vec4> captureFrom(render::Renderer& renderer, const scene::Camera& camera,
+                                       render::OutputMode mode, int light);
     scene::Scene& scene_;
     int width_, height_;
     float time_;

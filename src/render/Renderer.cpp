@@ -84,7 +84,8 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
     lightLayout_ = initialLightLayout(scene_.lights);
-    lighting_ = buildLightingProgram(technique_->lookupShader(), lightLayout_);
+    lightingDefines_ = lightingDefines(*technique_);
+    lighting_ = buildLightingProgram(technique_->lookupShader(), lightingDefines_);
     PassPrograms passes = buildPassPrograms();
     resolve_ = std::move(passes.resolve);
     overlay_ = std::move(passes.overlay);
@@ -94,9 +95,11 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
 void Renderer::setTechnique(const std::string& name) {
     auto technique = shadows::createTechnique(name);
     configure(*technique, options_);
-    gl::Program lighting = buildLightingProgram(technique->lookupShader(), lightLayout_);
+    std::vector<std::string> defines = lightingDefines(*technique);
+    gl::Program lighting = buildLightingProgram(technique->lookupShader(), defines);
     technique_ = std::move(technique);
     lighting_ = std::move(lighting);
+    lightingDefines_ = std::move(defines);
     oit_.reset();  // its lighting variants include the old technique's lookup
     options_.technique = name;
 }
@@ -107,10 +110,12 @@ std::string Renderer::reloadShaders() {
         shadows::ParameterValues current;
         for (const auto& p : technique_->parameters()) current.emplace_back(p.name, p.text());
         shadows::applyParameters(technique->parameters(), current);
-        gl::Program lighting = buildLightingProgram(technique->lookupShader(), lightLayout_);
+        std::vector<std::string> defines = lightingDefines(*technique);
+        gl::Program lighting = buildLightingProgram(technique->lookupShader(), defines);
         PassPrograms passes = buildPassPrograms();
         technique_ = std::move(technique);
         lighting_ = std::move(lighting);
+        lightingDefines_ = std::move(defines);
         resolve_ = std::move(passes.resolve);
         overlay_ = std::move(passes.overlay);
         lines_ = std::move(passes.lines);
@@ -187,6 +192,12 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.countCasters = [&](const shadows::CasterSelection& selection) {
             return static_cast<std::size_t>(std::count_if(draws.begin(), draws.end(), [&](const Draw& d) { return selected(d, selection); }));
         };
+        frame.casterBounds = [&](const shadows::CasterSelection& selection) {
+            scene::Bounds all;
+            for (const Draw& d : draws)
+                if (selected(d, selection)) all.add(d.worldBounds);
+            return all;
+        };
         frame.drawCasters = [&](const gl::Program& program, const shadows::CasterSelection& selection) {
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
@@ -239,7 +250,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
             drawSurfaces(draws, true, camera, aspect);
         } else if (shaded) {
-            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightLayout_);
+            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
             oit_->render(mode, options_.peelLayers, gpu_, draws,
                          [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
                          height);
@@ -258,12 +269,21 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
 }
 
 // Lights added, removed, retyped or shadowed differently change the layout the lighting
-// programs are specialised to: rebuild them (rare; a compile costs ~0.1-1 s on llvmpipe).
+// programs are specialised to, and a technique parameter may change its lookup's compile-time
+// choices: rebuild them (rare; a compile costs ~0.1-1 s on llvmpipe).
 void Renderer::useLightLayout(std::vector<std::string> layout) {
-    if (layout == lightLayout_) return;
-    lighting_ = buildLightingProgram(technique_->lookupShader(), layout);
     lightLayout_ = std::move(layout);
+    std::vector<std::string> defines = lightingDefines(*technique_);
+    if (defines == lightingDefines_) return;
+    lighting_ = buildLightingProgram(technique_->lookupShader(), defines);
+    lightingDefines_ = std::move(defines);
     oit_.reset();
+}
+
+std::vector<std::string> Renderer::lightingDefines(const shadows::ShadowTechnique& technique) const {
+    std::vector<std::string> defines = lightLayout_;
+    for (auto& d : technique.lookupDefines()) defines.push_back(std::move(d));
+    return defines;
 }
 
 // The technique's world-space lines (cascade frusta, ...), depth-tested against the scene.

@@ -114,6 +114,7 @@ private:
     void drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
     bool ownObject(std::size_t object) const { return ownObjects_.empty() || (object < ownObjects_.size() && ownObjects_[object]); }
     void useLightLayout(std::vector<std::string> layout);
+    std::vector<std::string> lightingDefines(const shadows::ShadowTechnique& technique) const;
     void drawDebugLines(const scene::Camera& camera, float aspect);
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
@@ -127,7 +128,8 @@ private:
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     gl::Program occluder_;  // depth of the objects another renderer shades (built on first use)
-    std::vector<std::string> lightLayout_;  // the defines lighting_ was built with (render/LightingProgram.h)
+    std::vector<std::string> lightLayout_;      // the light layout's defines (render/LightingProgram.h)
+    std::vector<std::string> lightingDefines_;  // what lighting_ was built with: the layout's and the technique's
     gl::Buffer lineVertices_;
     gl::VertexArray lineVao_;
     std::unique_ptr<OrderIndependentTransparency> oit_;  // built on first use, per technique

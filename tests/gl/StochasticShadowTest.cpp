@@ -5,6 +5,7 @@
 
 #include "reference/Comparison.h"
 #include "render/Offscreen.h"
+#include "scene/io/SceneFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -258,6 +259,53 @@ TEST_P(Stochastic, EveryLightTypeWithinOnePercentOfTheTruth) {
     for (int l = 0; l < 3; ++l) EXPECT_LE(wrong[l], 1.0) << "light " << l;
     EXPECT_LE(wrong[1], 1.5 * wrong[0]) << "spot";
     EXPECT_LE(wrong[2], 1.5 * wrong[0]) << "point";
+}
+
+// Against the ray-traced truth, on the coloured-glass scene (red, green and blue panes, a yellow
+// block and a cyan ball whose shadows overlap, under a sun and a spot): the colour error inside
+// coloured shadows (mean |difference| per channel where the truth is coloured) within 1.5x the
+// deterministic colour map's (issue 11; measured 1.12x at 320x180). The first wave's lookup (a
+// 4 x 4 tile box, no coverage) quantised every tile to 1/16 and blurred coloured edges over a
+// tile: 2.25x. It must fail the same bound, or the test could not see the difference.
+TEST_P(Stochastic, ColourErrorWithinOneAndAHalfTimesTheDeterministicMap) {
+    scene::Scene s = scene::io::loadScene(std::filesystem::path(PENUMBRA_TEST_DATA) / "../../scenes/glass.json");
+    reference::Comparison cmp(s, 320, 180, 0.0f);
+    cmp.traceReference(16, false);
+    const auto deterministic = cmp.evaluate("hard", 0, 0);
+    const auto stochastic = cmp.evaluate(GetParam(), 0, 0);
+    const auto firstWave = cmp.evaluate(GetParam(), 0, 0, {{"coverage", "false"}, {"filter", "box16"}});
+    std::printf("%s colour error %.4f (box16 without coverage %.4f), deterministic map %.4f, over %zu coloured pixels\n",
+                GetParam(), stochastic.colourError, firstWave.colourError, deterministic.colourError, stochastic.colouredPixels);
+    ASSERT_GT(stochastic.colouredPixels, 2000u) << "the scene must have coloured shadows";
+    EXPECT_LE(stochastic.colourError, 1.5 * deterministic.colourError);
+    EXPECT_GT(firstWave.colourError, 1.5 * deterministic.colourError);
+}
+
+// The lookup's filter is compiled into the lighting program (lookupDefines): a filter chosen
+// on a live renderer (the window's panel) must rebuild the program, giving the pixels a
+// renderer created with that filter gives, and the previous filter's pixels must differ.
+TEST_P(Stochastic, AFilterChangedOnALiveRendererRebuildsTheLookup) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "lights": [ { "type": "directional", "direction": [0.2, -1, 0.1], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "plane", "size": [3, 3], "position": [0, 2, 0], "material": { "alpha": 1, "transmission": [0.1, 0.9, 0.1] } } ] })");
+    auto render = [&](render::Renderer& r) {
+        render::OffscreenTarget target(96, 96);
+        r.render(0.0f, s.camera, 96, 96, target.framebuffer());
+        return r.readLinear();
+    };
+    render::RenderOptions options;
+    options.technique = GetParam();
+    options.output = OutputMode::Visibility;
+    render::Renderer live(s, options);
+    const std::vector<float> box = render(live);
+    shadows::applyParameters(live.technique().parameters(), {{"filter", "cross13"}});
+    const std::vector<float> changed = render(live);
+    options.parameters = {{"filter", "cross13"}};
+    render::Renderer fresh(s, options);
+    EXPECT_EQ(changed, render(fresh));
+    EXPECT_NE(changed, box);
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, Stochastic, ::testing::Values("cssm1", "cssm2"),

@@ -13,6 +13,7 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
     : variant_(variant), fp16_(variant == Variant::Rgb) {
     copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/copy.frag"});
     casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/cssm/caster.frag"});
+    tiles_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/tiles.frag"});
 }
 
 std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
@@ -25,6 +26,9 @@ std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
             Parameter::flag("separate_opaque", separateOpaque_,
                             "opaque occlusion from the depth map (a hard test), the coloured map for translucent layers "
                             "only; off: the thesis's combined map"),
+            Parameter::flag("coverage", coverage_,
+                            "box filters: average the transmittance over the texels a translucent layer covers, and place "
+                            "the coloured edge by the receiver's own texels (as sharp as the plain map's)"),
             Parameter::real("radius_texels", radiusTexels_, 0.0f, 8.0f,
                             "Poisson / random filter radius; 0: automatic, so that taps land on distinct texels"),
             Parameter::choice("rng", generator_, {"pcg", "sin-fract"}, "per-fragment random number generator"),
@@ -35,7 +39,8 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     if (maps_.size() <= i) maps_.resize(i + 1);
     LightMap& m = maps_[i];
     const GLenum format = fp16_ ? GL_RGBA16F : GL_RGBA32F;
-    if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format) return;
+    const int side = usesTiles() ? tileSide() : 0;
+    if (m.resolution == depth.resolution && m.cube == depth.cube && m.format == format && m.tileSide == side) return;
     m = LightMap{};
     m.resolution = depth.resolution;
     m.cube = depth.cube;
@@ -56,7 +61,74 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
         fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
         fb.checkComplete("coloured stochastic shadow map");
         m.targets.push_back(std::move(fb));
+        m.dirty.emplace_back(0, 0, res, res);  // new storage holds anything
     }
+    m.tileSide = side;
+    if (side == 0) return;
+    const int tiles = (res + side - 1) / side;
+    m.tiles = m.cube ? gl::Texture::createCube(GL_RGBA32F, tiles) : gl::Texture::create2D(GL_RGBA32F, tiles, tiles);
+    m.tiles.setFilter(GL_NEAREST, GL_NEAREST);
+    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
+        m.colourFaces.push_back(m.cube ? gl::Texture::view2D(m.colour, format, f) : gl::Texture{});
+        m.tileTargets.push_back(gl::Framebuffer::colourOnly(m.tiles, m.cube ? f : -1, "coloured stochastic shadow map tiles"));
+    }
+}
+
+bool ColoredStochasticShadowMap::usesTiles() const {
+    return coverage_ && separateOpaque_ && (filter_ == gpu::kCssmBox16 || filter_ == gpu::kCssmBox64);
+}
+
+int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmBox64 ? 8 : 4; }
+
+// The texels of a square map of `resolution` that `bounds` can cover through `viewProj`
+// (x0, y0, x1, y1, exclusive; empty when x0 >= x1): the whole map when a corner lies behind a
+// perspective light's eye, where its projection would flip.
+static glm::ivec4 texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution) {
+    if (bounds.empty()) return glm::ivec4(0);
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 c = viewProj * glm::vec4((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                                                 (i & 4) ? bounds.max.z : bounds.min.z, 1.0f);
+        if (c.w <= 1e-6f) return {0, 0, resolution, resolution};
+        const glm::vec2 ndc = glm::vec2(c) / c.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    const glm::vec2 first = glm::floor((glm::clamp(lo, -1.0f, 1.0f) * 0.5f + 0.5f) * float(resolution)) - 1.0f;
+    const glm::vec2 last = glm::ceil((glm::clamp(hi, -1.0f, 1.0f) * 0.5f + 0.5f) * float(resolution)) + 1.0f;
+    return glm::clamp(glm::ivec4(first.x, first.y, last.x, last.y), 0, resolution);
+}
+
+// White ("nothing occludes") wherever the face may hold anything else.
+void ColoredStochasticShadowMap::clearToWhite(LightMap& m, std::size_t face) {
+    const glm::ivec4 r = m.dirty[face];
+    if (r.x >= r.z || r.y >= r.w) return;
+    const float white[4] = {1, 1, 1, 1};
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
+    glClearNamedFramebufferfv(m.targets[face].id(), GL_COLOR, 0, white);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+// Tile statistics of face `face` (tiles.frag) over the tiles that `rect` (texels) touches; every
+// other tile holds zeros, i.e. no translucent layer.
+void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const glm::ivec4& rect) {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
+    if (rect.x >= rect.z || rect.y >= rect.w) return;
+    const glm::ivec2 first = glm::ivec2(rect.x, rect.y) / m.tileSide;
+    const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
+    const gl::ScopedPassState state(gl::PassState::fullscreen());
+    m.tileTargets[face].bind();
+    glViewport(0, 0, m.tiles.width(), m.tiles.height());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(first.x, first.y, last.x - first.x, last.y - first.y);
+    tiles_.use();
+    tiles_.set("uSide", m.tileSide);
+    (m.cube ? m.colourFaces[face] : m.colour).bind(0);
+    fullscreenVao_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
@@ -64,6 +136,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     gl::DebugGroup group(name().c_str());
     casters_.set("uRandomGenerator", generator_);
     casters_.set("uXi", xi_);
+    casters_.set("uIndependentChannels", variant_ == Variant::PerChannel ? 1 : 0);
     casters_.set("uDitherBits", filter_ == gpu::kCssmBox64 ? 3 : 2);  // the dither period matches the box
     casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
     // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
@@ -81,14 +154,18 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             p->set("uNear", ls.near);
             p->set("uFar", ls.far);
         }
-        glViewport(0, 0, m.resolution, m.resolution);
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
+            const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i)};
+            const scene::Bounds casters = frame.casterBounds(translucent);
+            glViewport(0, 0, m.resolution, m.resolution);
             m.targets[f].bind();
+            const glm::ivec4 rect = texelRect(casters, ls.viewProj[f], m.resolution);
             if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
-                const float white[4] = {1, 1, 1, 1};
-                glClearNamedFramebufferfv(m.targets[f].id(), GL_COLOR, 0, white);
+                clearToWhite(m, f);
+                m.dirty[f] = rect;
             } else {  // 1 (white) where nothing opaque is
                 const gl::ScopedPassState state(copyPass);
+                m.dirty[f] = glm::ivec4(0, 0, m.resolution, m.resolution);
                 copy_.use();
                 depthSampler_.bind(0);
                 m.depthFaces[f].bind(0);
@@ -96,22 +173,19 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
                 glDrawArrays(GL_TRIANGLES, 0, 3);
                 gl::Sampler::unbind(0);
             }
-            casters_.set("uLightViewProj", ls.viewProj[f]);
-            if (variant_ == Variant::Rgb) {
+            if (!casters.empty()) {
+                casters_.set("uLightViewProj", ls.viewProj[f]);
                 const gl::ScopedPassState state(casterPass);
-                casters_.set("uChannel", -1);
-                frame.drawCasters(casters_, {Casters::Translucent, ls.viewProj[f], static_cast<int>(i)});
-                continue;
+                frame.drawCasters(casters_, translucent);
             }
-            for (int c = 0; c < 3; ++c) {  // one map per wavelength
-                gl::PassState channelPass = casterPass;
-                channelPass.colorWrite = glm::bvec4(c == 0, c == 1, c == 2, c == 0);
-                const gl::ScopedPassState state(channelPass);
-                casters_.set("uChannel", c);
-                frame.drawCasters(casters_, {Casters::Translucent, ls.viewProj[f], static_cast<int>(i)});
-            }
+            if (m.tileSide > 0) renderTiles(m, f, rect);
         }
     }
+}
+
+std::vector<std::string> ColoredStochasticShadowMap::lookupDefines() const {
+    return {"CSSM_FILTER " + std::to_string(filter_), std::string("CSSM_SEPARATE_OPAQUE ") + (separateOpaque_ ? "1" : "0"),
+            std::string("CSSM_COVERAGE ") + (coverage_ ? "1" : "0")};
 }
 
 void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
@@ -119,17 +193,17 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     for (std::size_t i = 0; i < depth_.slots().size() && i < maps_.size(); ++i) {
         if (!depth_.slots().shadowed(i) || !maps_[i].colour.id()) continue;
         maps_[i].colour.bind(static_cast<GLuint>(depth_.slots().rawUnit(i)));
+        if (maps_[i].tileSide > 0) maps_[i].tiles.bind(static_cast<GLuint>(depth_.slots().tintUnit(i)));
     }
-    lighting.set("uFilter", filter_);
-    lighting.set("uSeparateOpaque", separateOpaque_ ? 1 : 0);
     lighting.set("uRadiusTexels", radiusTexels_);
+    lighting.set("uTileSide", tileSide());
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
     poisson_.upload(lighting);
 }
 
 std::size_t ColoredStochasticShadowMap::memoryBytes() const {
     std::size_t total = depth_.memoryBytes();
-    for (const auto& m : maps_) total += m.colour.memoryBytes();
+    for (const auto& m : maps_) total += m.colour.memoryBytes() + m.tiles.memoryBytes();
     return total;
 }
 

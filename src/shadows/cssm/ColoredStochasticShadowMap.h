@@ -13,13 +13,21 @@
 namespace penumbra::shadows {
 
 // Colored Stochastic Shadow Maps (McGuire & Enderton 2011; Mátl 2013 ch. 4-5). Per light: the
-// opaque casters' depth, copied (linearised) into the channels of a colour map; translucent
-// casters then write their depth per channel with probability ρ_λ = (1 - t_λ) α under MIN
-// blending. Layers multiply naturally: light passes a texel only if no layer stopped it, so two
-// green panes give t², which the thesis (sorting whole objects) could not.
-//   cssm2: one translucent pass, one ξ per fragment, RGBA16F (the thesis's RGB16F + alpha).
-//   cssm1: one translucent pass per channel with independent ξ, RGBA32F ("one depth map per
-//          wavelength", packed into the channels of one texture).
+// opaque casters' depth map, and a colour map into which translucent casters write their depth
+// per channel with probability ρ_λ = (1 - t_λ) α under MIN blending. Layers multiply naturally:
+// light passes a texel only if no layer stopped it, so two green panes give t², which the
+// thesis (sorting whole objects) could not.
+//   cssm2: one ξ per fragment shared by the channels, RGBA16F (the thesis's RGB16F + alpha).
+//   cssm1: an independent ξ per channel, RGBA32F ("one depth map per wavelength"; the thesis's
+//          one pass per channel, drawn here as one pass with a ξ stream per channel).
+// The defaults go past the thesis (each step selectable, the thesis's method being
+// separate_opaque=false xi=white filter=cross13 coverage=false):
+//   - separate_opaque: opaque occlusion is a hard test on the depth map; the colour map holds
+//     translucent layers only (no blurred opaque edges, no lit-wall line artefact);
+//   - xi=stratified: every threshold stratum once per 8 x 8 texel tile (caster.frag);
+//   - filter=box64 with coverage: the receiver's own texels place the coloured edge (as sharp
+//     as the plain map's), the tile counts of tiles.frag, blended between the 2 x 2 nearest
+//     tiles, give the transmittance, exact to 1/64 inside a layer.
 class ColoredStochasticShadowMap final : public ShadowTechnique {
 public:
     enum class Variant { PerChannel = 1, Rgb = 2 };
@@ -28,6 +36,7 @@ public:
     std::string name() const override { return variant_ == Variant::Rgb ? "cssm2" : "cssm1"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/cssm/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;
@@ -43,17 +52,28 @@ private:
         gl::Texture colour;
         std::vector<gl::Texture> depthFaces;    // 2D views of the depth map's faces (copy input)
         std::vector<gl::Framebuffer> targets;   // colour face + the depth map face (depth test)
+        // Per face: the texels (x0, y0, x1, y1) that may hold something other than white, so that
+        // the next frame clears only those (a 2048² RGBA32F clear is 64 MiB of writes).
+        std::vector<glm::ivec4> dirty;
+        int tileSide = 0;                       // with coverage: tiles.frag's statistics
+        gl::Texture tiles;                      // RGBA32F (2D or cube), one texel per side x side tile
+        std::vector<gl::Texture> colourFaces;   // 2D views of the colour map's faces (tiles input)
+        std::vector<gl::Framebuffer> tileTargets;  // per face
     };
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
+    bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
+    int tileSide() const;
+    void renderTiles(LightMap& m, std::size_t face, const glm::ivec4& rect);
+    void clearToWhite(LightMap& m, std::size_t face);
 
     Variant variant_;
-    int filter_ = gpu::kCssmBox16, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
+    int filter_ = gpu::kCssmBox64, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
     float radiusTexels_ = 0.0f;
-    bool fp16_, separateOpaque_ = true;
+    bool fp16_, separateOpaque_ = true, coverage_ = true;
     PoissonDisk poisson_;
     DepthAndTintMaps depth_{/*withTint=*/false};
     std::vector<LightMap> maps_;
-    gl::Program copy_, casters_;
+    gl::Program copy_, casters_, tiles_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;
 };

@@ -5,7 +5,8 @@
 // occluder per channel. (The thesis's pseudocode prints the comparison reversed; its text and
 // CSSM2 agree with this.)
 //   CSSM2: one pass, one ξ per fragment shared by the channels.
-//   CSSM1: one pass per channel (uChannel), independent ξ per channel.
+//   CSSM1: independent ξ per channel (the thesis draws one pass per channel; one pass with a
+//          ξ stream per channel writes the same texels).
 // Only translucent casters come here; the opaque ones are in the depth map this pass tests against.
 #include "shaders/common/material.glsl"
 #include "shaders/common/random.glsl"
@@ -14,7 +15,7 @@
 in vec2 vUv;
 uniform int uPerspective;
 uniform float uNear, uFar;
-uniform int uChannel;  // -1: all channels (CSSM2), else 0..2 (CSSM1)
+uniform int uIndependentChannels;  // 0: one ξ for all channels (CSSM2), 1: one per channel (CSSM1)
 uniform int uXi;       // kXi*
 uniform mat4 uModel;   // the caster's placement (caster.vert): tells objects apart, in any draw order
 layout(location = 0) out vec4 outDepth;
@@ -24,26 +25,40 @@ float linearDepth(float z) { return uPerspective == 0 ? z : perspectiveLinearDep
 // Stratified ξ: within every n x n texel tile each of the n² strata [k, k + 1) / n² holds
 // exactly one texel's threshold, so the share of texels a layer writes in a whole tile is ρ to
 // within 1/n² instead of a binomial draw (sd sqrt(ρ(1 - ρ)/n²)). Which texel gets which stratum
-// is a uniformly random permutation per tile and per layer - the rank of the texel's hash among
-// the tile's n² hashes - and the thresholds are shifted together inside their strata, so that the
-// mean is exact. Independent permutations per layer (object placement, triangle, side) keep
-// stacked layers independent, so their transmittances multiply, with the overlap of two layers
-// hypergeometric rather than binomial. Nothing depends on the frame: a static view does not flicker.
+// is a pseudo-random permutation per tile and per layer, and the thresholds are shifted together
+// inside their strata, so that the mean is exact. Independent permutations per layer (object
+// placement, triangle, side) keep stacked layers independent, so their transmittances multiply.
+// Ordered dithers (shifted or XOR-scrambled) were measured first and made two stacked 50 %
+// layers coincide or complement per tile. Nothing depends on the frame: a static view does not
+// flicker.
 uniform int uDitherBits;  // n = 2^bits: 2 (4 x 4 tiles) or 3 (8 x 8)
+
+// A keyed permutation of [0, n²): a 4-round Feistel network on the index's two `bits`-bit halves
+// with hashed round functions (Luby & Rackoff 1988). Every index lands on every stratum with
+// probability 1/n² over the keys, which is what keeps the layers' means and products exact; it
+// costs 4 hashes where ranking the texel's hash among the tile's n² hashes cost n².
+uint permuteInTile(uint index, uint key, uint bits) {
+    uint mask = (1u << bits) - 1u;
+    uint left = index >> bits, right = index & mask;
+    for (uint round = 0u; round < 4u; ++round) {
+        uint next = left ^ (pcgHash(right ^ pcgHash(key + round)) & mask);
+        left = right;
+        right = next;
+    }
+    return (left << bits) | right;
+}
 
 float stratifiedXi(uint stream) {
     uvec2 p = uvec2(gl_FragCoord.xy);
-    uint side = 1u << uint(uDitherBits), count = side * side;
+    uint bits = uint(uDitherBits), side = 1u << bits;
     uvec4 placement = floatBitsToUint(uModel[3]) ^ floatBitsToUint(uModel[0]) ^ floatBitsToUint(uModel[1]);
     uint object = pcgHash(placement.x ^ pcgHash(placement.y ^ pcgHash(placement.z ^ pcgHash(floatBitsToUint(uModel[2].x)))));
     uint layer = object ^ pcgHash(uint(gl_PrimitiveID) * 2u + (gl_FrontFacing ? 1u : 0u));
-    uvec2 tile = p >> uint(uDitherBits), inTile = p & (side - 1u);
+    uvec2 tile = p >> bits, inTile = p & (side - 1u);
     uint seed = pcgHash(tile.x ^ pcgHash(tile.y ^ pcgHash(layer ^ pcgHash(stream))));
-    uint mine = pcgHash(seed + inTile.y * side + inTile.x);
-    uint rank = 0u;
-    for (uint k = 0u; k < count; ++k) rank += pcgHash(seed + k) < mine ? 1u : 0u;
+    uint stratum = permuteInTile(inTile.y * side + inTile.x, seed, bits);
     float shift = float(pcgHash(seed ^ 0x9e3779b9u) >> 8) * (1.0 / 16777216.0);
-    return (float(rank) + shift) / float(count);
+    return (float(stratum) + shift) / float(side * side);
 }
 
 float drawXi(uint stream) { return uXi == kXiStratified ? stratifiedXi(stream) : fragmentRandom(stream); }
@@ -51,13 +66,10 @@ float drawXi(uint stream) { return uXi == kXiStratified ? stratifiedXi(stream) :
 void main() {
     vec3 rho = materialStopped(materialCoverage(materialTexel(vUv)));
     float z = linearDepth(gl_FragCoord.z);
-    if (uChannel < 0) {
-        float xi = drawXi(0u);
-        // Alpha: the nearest translucent layer of any channel (MIN-blended), whatever ξ drew,
-        // so that lookups can tell cheaply where no coloured shadow can be.
-        outDepth = vec4(mix(vec3(1.0), vec3(z), lessThan(vec3(xi), rho)), z);
-        return;
-    }
-    float xi = drawXi(uint(uChannel) + 1u);
-    outDepth = vec4(vec3(xi < rho[uChannel] ? z : 1.0), z);  // alpha: as above (written in the red pass)
+    // CSSM2: one ξ shared by the channels. CSSM1: an independent ξ per channel (its own stream),
+    // which is what the thesis's one pass per wavelength computes, here in a single pass.
+    vec3 xi = uIndependentChannels != 0 ? vec3(drawXi(1u), drawXi(2u), drawXi(3u)) : vec3(drawXi(0u));
+    // Alpha: the nearest translucent layer of any channel (MIN-blended), whatever ξ drew, so
+    // that lookups can tell where no coloured shadow can be.
+    outDepth = vec4(mix(vec3(1.0), vec3(z), lessThan(xi, rho)), z);
 }

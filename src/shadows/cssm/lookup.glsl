@@ -7,10 +7,14 @@
 #include "src/shadows/common/glsl/kernels.glsl"
 #include "src/shadows/cssm/CssmFilter.h"
 
-uniform int uFilter;  // kCssm*
-uniform int uSeparateOpaque;  // 1: the map holds translucent layers only; opaque casters come from the depth map
+// Compile-time choices (ColoredStochasticShadowMap::lookupDefines), so that only the chosen
+// filter's taps are in the program.
+const int kFilter = CSSM_FILTER;  // kCssm*
+const bool kSeparateOpaque = CSSM_SEPARATE_OPAQUE != 0;  // the map holds translucent layers only; opaque casters come from the depth map
+const bool kCoverage = CSSM_COVERAGE != 0;  // box filters average over the texels a layer covers; the receiver's own coverage places the edge
 uniform float uStorageEpsilon;  // relative precision of the stored depth (RGBA16F: 2^-10), 0 for fp32
-uniform float uRadiusTexels;  // <= 0: automatic, so that the taps land on distinct texels
+uniform float uRadiusTexels;
+uniform int uTileSide;  // 4 or 8: the side of the stratified tiles (box filters)
 
 const vec2 kCross13[13] = vec2[](vec2(0, 0), vec2(3, 3), vec2(-3, 3), vec2(3, -3), vec2(-3, -3), vec2(4, 0),
                                  vec2(-4, 0), vec2(0, 4), vec2(0, -4), vec2(7, 0), vec2(-7, 0), vec2(0, 7), vec2(0, -7));
@@ -45,6 +49,103 @@ vec3 passes(ShadowSite s, vec2 texels) {
     return passesIf(stored, tapReceiverDepth(s, texels), s.light);
 }
 
+// ---- Box filters with coverage (2D maps and cube faces alike) ----
+// Where colour falls is decided by the receiver's own texels, exactly as the plain map decides
+// its edges; how much, by the share of light that passes the covered texels of the stratified
+// tiles around the receiver - exact to 1/side² inside a layer, since each tile holds every
+// threshold stratum once (caster.frag). The tiles' counts come precomputed (tiles.frag) and are
+// blended bilinearly between the 2 x 2 nearest tiles, weighted by how many texels each covers;
+// where the receiver is not behind every layer written in those tiles, its own tile is counted
+// texel by texel, each texel tested against the receiver's depth there.
+
+// A map texel seen from the receiver: 2D maps address texels directly, cube maps through the
+// face the receiver's direction selects (GL 4.5 table 8.19).
+struct MapFace { int face; vec2 texel; };  // texel: the receiver in texel units of its face
+
+MapFace mapFace(ShadowSite s) {
+    MapFace m;
+    m.face = 0;
+    if (s.cube) m.texel = cubeFaceCoord(s.coord, m.face).xy * s.resolution;
+    else m.texel = s.coord.xy * s.resolution;
+    return m;
+}
+
+vec3 faceDirection(ShadowSite s, MapFace m, vec2 texel) { return cubeFaceDirection(m.face, texel / s.resolution); }
+
+vec4 rawTexel(ShadowSite s, MapFace m, vec2 texel) {
+    return s.cube ? shadowRawLodCube(s.slot, faceDirection(s, m, texel)) : shadowRawLod2D(s.slot, texel / s.resolution);
+}
+
+// The receiver's linear depth where its plane meets the light's ray through `texel`.
+float receiverAt(ShadowSite s, MapFace m, vec2 texel) {
+    float windowDepth = s.cube ? cubeReceiverDepth(s, faceDirection(s, m, texel)) : tapReceiverDepth(s, texel - m.texel);
+    return linearShadowDepth(s.light, windowDepth) * (1.0 - uStorageEpsilon);
+}
+
+vec4 tileStats(ShadowSite s, MapFace m, ivec2 tile, int side) {
+    int last = int(ceil(s.resolution / float(side))) - 1;
+    tile = clamp(tile, ivec2(0), ivec2(last));  // no neighbours across map (face) borders
+    if (!s.cube) return shadowTintFetch2D(s.slot, tile);
+    return shadowTintCube(s.slot, faceDirection(s, m, (vec2(tile) + 0.5) * float(side)));
+}
+
+// Share of the receiver's footprint that a translucent layer in front of it covers: its 2 x 2
+// nearest texels, bilinearly weighted, as the plain map's hardware comparison weighs them.
+float ownCoverage(ShadowSite s, MapFace m) {
+    vec2 t = m.texel - 0.5;
+    vec2 centre = floor(t) + 1.0;  // between the 2 x 2 texels a gather reads
+    vec4 nearest = s.cube ? shadowRawGatherAlphaCube(s.slot, faceDirection(s, m, centre))
+                          : shadowRawGatherAlpha2D(s.slot, centre / s.resolution);
+    vec4 c = vec4(lessThan(nearest, vec4(receiverAt(s, m, m.texel))));
+    vec2 f = fract(t);
+    return mix(mix(c.w, c.z, f.x), mix(c.x, c.y, f.x), f.y);  // gather order: (0,1) (1,1) (1,0) (0,0)
+}
+
+// (passes per channel, 1) where a layer lies in front of the receiver at `texel`, else 0.
+vec4 coveredPasses(ShadowSite s, MapFace m, vec2 texel) {
+    vec4 stored = rawTexel(s, m, texel);
+    float receiver = receiverAt(s, m, texel);
+    if (stored.a >= receiver) return vec4(0.0);
+    return vec4(vec3(greaterThan(stored.rgb, vec3(receiver))), 1.0);
+}
+
+vec3 colouredByTiles(ShadowSite s, int side) {
+    MapFace m = mapFace(s);
+    float own = ownCoverage(s, m);
+    if (own <= 0.0) return vec3(1.0);  // no layer in front of the receiver's own texels
+    vec2 tileCoord = m.texel / float(side) - 0.5;
+    ivec2 base = ivec2(floor(tileCoord));
+    vec2 f = tileCoord - vec2(base);
+    vec4 t00 = tileStats(s, m, base, side), t10 = tileStats(s, m, base + ivec2(1, 0), side);
+    vec4 t01 = tileStats(s, m, base + ivec2(0, 1), side), t11 = tileStats(s, m, base + ivec2(1, 1), side);
+    vec4 countAndDepth = vec4(t00.a, t10.a, t01.a, t11.a);
+    vec4 covered = floor(countAndDepth), farthest = countAndDepth - covered;
+    // The receiver's nearest depth over the four tiles: at one of their outer corners (it is planar).
+    vec2 lo = vec2(base) * float(side), hi = lo + 2.0 * float(side);
+    float nearest;
+    if (s.cube) {
+        nearest = min(min(receiverAt(s, m, lo), receiverAt(s, m, hi)), min(receiverAt(s, m, vec2(lo.x, hi.y)), receiverAt(s, m, vec2(hi.x, lo.y))));
+    } else {  // tapReceiverDepth's plane, clamped as there
+        vec2 corner = mix(hi, lo, greaterThan(s.depthSlope, vec2(0.0))) - m.texel;
+        nearest = linearShadowDepth(s.light, s.depth + clamp(dot(s.depthSlope, corner), -0.01, 0.01)) * (1.0 - uStorageEpsilon);
+    }
+    vec3 t;
+    vec4 w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y) * covered;
+    if (all(lessThan(farthest, vec4(nearest))) && dot(w, vec4(1.0)) > 0.0) {
+        vec4 ratio = w / dot(w, vec4(1.0));  // per covered texel of each tile
+        vec4 perTexel = ratio / max(covered, vec4(1.0));
+        t = perTexel.x * t00.rgb + perTexel.y * t10.rgb + perTexel.z * t01.rgb + perTexel.w * t11.rgb;
+    } else {
+        vec2 first = floor(m.texel / float(side)) * float(side);
+        vec4 acc = vec4(0.0);
+        // A uniform bound: an unrolled loop would run, masked, for every pixel on llvmpipe.
+        for (int j = 0; j < uTileSide; ++j)
+            for (int i = 0; i < uTileSide; ++i) acc += coveredPasses(s, m, first + vec2(i, j) + 0.5);
+        t = acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0);
+    }
+    return mix(vec3(1.0), t, own);
+}
+
 // The box filters on a cube face: the side x side texels of the face's tile grid that hold the
 // receiver, read at their centres (directions through them).
 vec3 cubeTileSum(ShadowSite s, int side) {
@@ -70,35 +171,36 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     if (!s.inside) return vec3(1.0);
     vec3 sum = vec3(0.0);
     int n;
-    if (uFilter == kCssmBox16 || uFilter == kCssmBox64) {
+    if (kFilter == kCssmBox16 || kFilter == kCssmBox64) {
         // The side x side texels nearest the receiver, at their centres: with the stratified ξ
         // one whole stratified tile (up to alignment), so the share of passing texels is the layer's 1 - ρ to within
         // 1/side².
-        int side = uFilter == kCssmBox16 ? 4 : 8;
+        int side = kFilter == kCssmBox16 ? 4 : 8;
         n = side * side;
         float h = 0.5 * float(side - 1);
         // 2D maps: the whole tile the receiver falls in, so that every layer counts exactly its
         // stratified share (windows across tile borders would mix partial, unstratified tiles).
         vec2 texel = s.coord.xy * s.resolution;
         vec2 corner = s.cube ? vec2(-h) : floor(texel / float(side)) * float(side) + 0.5 - texel;
-        if (uSeparateOpaque != 0 && !s.cube && noLayerInFront(s, corner, side)) return compareAt(s, vec2(0.0), 0.0) * vec3(1.0);
+        if (kSeparateOpaque && kCoverage) return compareAt(s, vec2(0.0), 0.0) * colouredByTiles(s, side);
+        if (kSeparateOpaque && !s.cube && noLayerInFront(s, corner, side)) return compareAt(s, vec2(0.0), 0.0) * vec3(1.0);
         if (s.cube) {
             sum = cubeTileSum(s, side);
         } else {
             for (int j = 0; j < side; ++j)
                 for (int i = 0; i < side; ++i) sum += passes(s, corner + vec2(i, j));
         }
-    } else if (uFilter == kCssmPcf9) {
+    } else if (kFilter == kCssmPcf9) {
         n = 9;
         for (int j = -1; j <= 1; ++j)
             for (int i = -1; i <= 1; ++i) sum += passes(s, vec2(i, j));
-    } else if (uFilter == kCssmPoisson16 || uFilter == kCssmPoisson20) {
-        n = uFilter == kCssmPoisson16 ? 16 : 20;
+    } else if (kFilter == kCssmPoisson16 || kFilter == kCssmPoisson20) {
+        n = kFilter == kCssmPoisson16 ? 16 : 20;
         // n taps need about n texels under the disk: r = sqrt(n / π), with room to spare.
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
         mat2 rot = pixelRotation();
         for (int i = 0; i < n; ++i) sum += passes(s, poissonTap(i, rot, radius));
-    } else if (uFilter == kCssmRandom30) {
+    } else if (kFilter == kCssmRandom30) {
         n = 30;
         float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
         for (int i = 0; i < n; ++i) sum += passes(s, randomDiskTap(i, radius));
@@ -114,6 +216,6 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // Opaque occlusion is a hard test at the receiver, exactly as the plain shadow map's: the
     // wide colour filter then never blurs opaque shadow edges, nor takes a lit wall beside the
     // receiver (its depth is nearer the light) for an occluder.
-    if (uSeparateOpaque != 0) return compareAt(s, vec2(0.0), 0.0) * coloured;
+    if (kSeparateOpaque) return compareAt(s, vec2(0.0), 0.0) * coloured;
     return coloured;
 }

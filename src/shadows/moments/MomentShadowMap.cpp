@@ -87,12 +87,7 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
         m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
         m.momentFaces.push_back(gl::Texture::view2D(m.moments, m.format, f));
-        gl::Framebuffer fb;
-        if (m.cube) fb.attachLayer(GL_COLOR_ATTACHMENT0, m.moments, f);
-        else fb.attach(GL_COLOR_ATTACHMENT0, m.moments);
-        fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        fb.checkComplete("moment map");
-        m.momentTargets.push_back(std::move(fb));
+        m.momentTargets.push_back(gl::Framebuffer::colourOnly(m.moments, m.cube ? f : -1, "moment map"));
     }
 }
 

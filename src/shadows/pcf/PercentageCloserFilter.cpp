@@ -52,9 +52,12 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
     return p;
 }
 
+std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
+    return {"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
+}
+
 void PercentageCloserFilter::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
-    lighting.set("uKernel", static_cast<int>(kernel_));
     lighting.set("uKernelSize", kernelSize_);
     lighting.set("uTaps", std::clamp(taps_, 1, PoissonDisk::kPoints));
     lighting.set("uRadiusTexels", radiusTexels_);

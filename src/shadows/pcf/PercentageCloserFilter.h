@@ -19,6 +19,7 @@ public:
 
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/pcf/lookup.glsl"; }
+    std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes(); }
 

@@ -5,7 +5,9 @@
 #include "src/shadows/common/glsl/kernels.glsl"
 #include "src/shadows/pcf/PcfKernel.h"
 
-uniform int uKernel;           // kPcf*
+// The kernel is a compile-time constant (PercentageCloserFilter::lookupDefines), so that the
+// program holds that kernel's taps alone (llvmpipe ran every kernel's first taps, masked).
+const int kKernel = PCF_KERNEL;  // kPcf*
 uniform int uKernelSize;       // N of the grid / Gaussian kernels
 uniform int uTaps;             // Poisson / random / jitter / dither tap count
 uniform float uRadiusTexels;   // filter radius in shadow texels
@@ -41,16 +43,16 @@ float grid(ShadowSite s, float radius, bool gaussian) {
 
 float percentageCloser(ShadowSite s, float radius) {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (uKernel == kPcfBilinear) return tap(s, vec2(0.0));
-    if (uKernel == kPcfGrid) return grid(s, radius, false);
-    if (uKernel == kPcfGaussian) return grid(s, radius, true);
-    if (uKernel == kPcfPoisson) return poisson(s, radius, mat2(1.0), uTaps);
-    if (uKernel == kPcfRandom) {
+    if (kKernel == kPcfBilinear) return tap(s, vec2(0.0));
+    if (kKernel == kPcfGrid) return grid(s, radius, false);
+    if (kKernel == kPcfGaussian) return grid(s, radius, true);
+    if (kKernel == kPcfPoisson) return poisson(s, radius, mat2(1.0), uTaps);
+    if (kKernel == kPcfRandom) {
         float sum = 0.0;
         for (int i = 0; i < uTaps; ++i) sum += tap(s, randomDiskTap(i, radius));
         return sum / float(uTaps);
     }
-    if (uKernel == kPcfJitter) {
+    if (kKernel == kPcfJitter) {
         float sum = 0.0;
         int layers = uTaps / 2;
         for (int l = 0; l < layers; ++l) {
@@ -59,7 +61,7 @@ float percentageCloser(ShadowSite s, float radius) {
         }
         return sum / float(layers * 2);
     }
-    if (uKernel == kPcfDither) {
+    if (kKernel == kPcfDither) {
         // Two interleaved halves of a Poisson set: neighbouring pixels use different taps,
         // the eye averages them (GPU Gems 1 ch. 11's dithered 4-tap idea, generalised).
         int parity = (pixel.x + pixel.y) & 1;
@@ -68,7 +70,7 @@ float percentageCloser(ShadowSite s, float radius) {
         for (int i = 0; i < count; ++i) sum += tap(s, uPoisson[2 * i + parity] * radius);
         return sum / float(count);
     }
-    if (uKernel == kPcfRotated) return poisson(s, radius, pixelRotation(), uTaps);
+    if (kKernel == kPcfRotated) return poisson(s, radius, pixelRotation(), uTaps);
     // kPcfAdaptive: a cheap ring test; the full kernel only where it disagrees (the penumbra).
     float probe = tap(s, vec2(0.0));
     float agree = 1.0;

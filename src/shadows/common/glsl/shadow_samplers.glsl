@@ -32,6 +32,12 @@ vec4 shadowTint2D(int slot, vec2 uv) {
     SLOT_SWITCH_4(S)
 #undef S
 }
+// One texel of the tint unit's texture (a technique's own per-tile data in its place).
+vec4 shadowTintFetch2D(int slot, ivec2 texel) {
+#define S(i) texelFetch(uShadowTint[i], texel, 0)
+    SLOT_SWITCH_4(S)
+#undef S
+}
 vec4 shadowTintCube(int slot, vec3 dir) {
 #define S(i) textureLod(uShadowTintCube[i], dir, 0.0)
     SLOT_SWITCH_2(S)
