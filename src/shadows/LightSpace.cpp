@@ -1,6 +1,7 @@
 #include "shadows/LightSpace.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::shadows {
@@ -24,12 +25,38 @@ std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj) {
     return corners;
 }
 
+// Against shimmer and crawling as the camera moves (cf. Valient, "Stable rendering of cascaded
+// shadow maps", ShaderX6; CascadeFit.h): the box's size per axis only takes values on a ladder
+// of 2^(1/8) steps, so it stays put while the view changes a little, and its corner sits on a
+// grid of kSnapTexels texels fixed in light space, so the map's content moves by whole texels,
+// and CSSM's stratified tiles (caster.frag, 8 x 8 texels) stay on the same world-space texels.
+// Costs up to 9 % + 8 texels of resolution per axis.
+constexpr float kSnapTexels = 8.0f;
+constexpr float kSizeSteps = 8.0f;  // ladder steps per doubling
+
+static void stabilise(glm::vec2& lo, glm::vec2& hi, int res) {
+    for (int axis = 0; axis < 2; ++axis) {
+        const float wanted = hi[axis] - lo[axis];
+        float size = std::exp2(std::ceil(std::log2(wanted) * kSizeSteps) / kSizeSteps);
+        float step = size / static_cast<float>(res) * kSnapTexels;
+        while (size < wanted + step) {  // room for the snapped corner
+            size *= std::exp2(1.0f / kSizeSteps);
+            step = size / static_cast<float>(res) * kSnapTexels;
+        }
+        lo[axis] = std::floor(lo[axis] / step) * step;
+        hi[axis] = lo[axis] + size;
+    }
+}
+
 static LightSpace directional(const Light& light, int res, const scene::Bounds& bounds, const scene::Camera& camera,
                               float aspect) {
     LightSpace ls;
     const glm::vec3 center = bounds.center();
     const float radius = std::max(glm::length(bounds.extent()) * 0.5f, 1e-3f);
-    const glm::mat4 view = glm::lookAt(center - light.direction * radius * 2.0f, center, anyPerpendicular(light.direction));
+    // The view's axis passes through the world origin, so that light-space x, y (and the
+    // snapping grid below) do not move when animated objects move the scene's centre.
+    const glm::vec3 axisPoint = light.direction * glm::dot(center, light.direction);
+    const glm::mat4 view = glm::lookAt(axisPoint - light.direction * radius * 2.0f, axisPoint, anyPerpendicular(light.direction));
 
     const scene::Bounds sceneLs = bounds.transformed(view);
     // What the camera can see, no further than the scene reaches.
@@ -46,8 +73,11 @@ static LightSpace directional(const Light& light, int res, const scene::Bounds& 
     }
     // A small margin so that geometry on the box faces is not clipped.
     const float margin = 1e-3f * radius;
+    lo -= margin;
+    hi += margin;
+    stabilise(lo, hi, res);
     const float zNear = -sceneLs.max.z - margin, zFar = -sceneLs.min.z + margin;
-    const glm::mat4 proj = glm::ortho(lo.x - margin, hi.x + margin, lo.y - margin, hi.y + margin, zNear, zFar);
+    const glm::mat4 proj = glm::ortho(lo.x, hi.x, lo.y, hi.y, zNear, zFar);
     ls.type = Light::Type::Directional;
     ls.resolution = res;
     ls.perspective = false;
