@@ -25,6 +25,7 @@ public:
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/moments/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;
@@ -34,7 +35,8 @@ protected:
 
 private:
     struct LightMoments {
-        int resolution = 0;
+        int resolution = 0;       // of the moments
+        int depthResolution = 0;  // of the depth map they come from
         bool cube = false;
         GLenum format = 0;
         int levels = 1;
@@ -48,11 +50,13 @@ private:
     GLenum format() const;
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     void convert(std::size_t light, const ShadowFrame& frame);
+    void buildPrograms();
 
     std::string name_;
     Warp warp_;
     int blurRadius_ = 2;
-    bool fp16_ = false, mipmaps_ = true, msaa_ = false;
+    bool fp16_ = false, mipmaps_ = true, msaa_ = false, halfResolution_ = true;
+    std::pair<int, bool> built_{-1, false};  // the blur radius and half resolution the programs were built with
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;

@@ -3,7 +3,9 @@
 #include "src/shadows/common/glsl/shadow_filtering.glsl"
 #include "src/shadows/moments/MomentWarp.h"
 
-uniform int uWarp;              // as src/shadows/moments/moments.frag
+// The warp is compiled in (MomentShadowMap::lookupDefines): llvmpipe would run every warp's
+// branch for every pixel.
+const int kWarp = MOMENT_WARP;  // kWarp*, as src/shadows/moments/moments.frag
 uniform vec2 uExponents;        // c+, c-
 uniform float uMinVariance;
 uniform float uBleedReduction;  // Lauritzen's light-bleeding reduction: linstep(amount, 1, p_max)
@@ -42,15 +44,15 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     float t = linearShadowDepth(light, s.depth);
     float x = 2.0 * t - 1.0;
     float lit;
-    if (uWarp == kWarpVariance) {
+    if (kWarp == kWarpVariance) {
         lit = chebyshev(m.xy, x, uMinVariance);
-    } else if (uWarp == kWarpExponential) {
+    } else if (kWarp == kWarpExponential) {
         lit = clamp(m.x * exp(-uExponents.x * x), 0.0, 1.0);
-    } else if (uWarp == kWarpExponentialVariance2 || uWarp == kWarpExponentialVariance4) {
+    } else if (kWarp == kWarpExponentialVariance2 || kWarp == kWarpExponentialVariance4) {
         // Variance is warped too: scale the minimum by the warp's slope squared.
         float p = exp(uExponents.x * x);
         lit = chebyshev(m.xy, p, uMinVariance * pow(uExponents.x * p, 2.0));
-        if (uWarp == kWarpExponentialVariance4) {
+        if (kWarp == kWarpExponentialVariance4) {
             float n = -exp(-uExponents.y * x);
             lit = min(lit, chebyshev(m.zw, n, uMinVariance * pow(uExponents.y * n, 2.0)));
         }
