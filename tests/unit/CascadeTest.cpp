@@ -1,5 +1,6 @@
-// Cascaded shadow maps, the geometry: split placement, texel density on a long scene, and the
-// stabilisation that keeps shadows from shimmering.
+// Directional maps, the geometry: cascades' split placement, texel density on a long scene, and
+// the stabilisation that keeps cascades and the plain map (LightSpace.cpp) from shimmering, and
+// CSSM's stratified tiles from crawling.
 #include "shadows/LightSpace.h"
 #include "shadows/cascaded/CascadeFit.h"
 
@@ -71,6 +72,45 @@ TEST(Cascades, StabilisationIgnoresSubTexelCameraMotion) {
     turned.target = s.camera.position + glm::vec3(10.0f, -0.5f, -100.0f);
     const Cascade rotated = fitCascade(s.sun, turned, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
     EXPECT_FLOAT_EQ(rotated.texelWorld, before.texelWorld);
+}
+
+glm::vec2 texelOf(const LightSpace& ls, const glm::vec3& p) {
+    return glm::vec2(ls.shadowMatrix * glm::vec4(p, 1.0f)) * static_cast<float>(ls.resolution);
+}
+
+// A pan of 60 steps of 0.3 texel: the box keeps its size except across a size-ladder step (a
+// few times at most), and otherwise a fixed world point stays on the same texel or moves by
+// whole 8-texel tiles: the map's content and CSSM's tile grid stay put in the world.
+TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
+    LongScene s;  // the camera sees 60 m of the 1 km ground: the view, not the scene, bounds the box
+    s.camera.far = 60.0f;
+    const int res = 1024;
+    LightSpace before = computeLightSpace(s.sun, res, s.bounds, s.camera, 16.0f / 9.0f);
+    const glm::vec3 step(0.3f * before.texelScale, 0.0f, 0.0f);
+    const glm::vec3 probe(1.0f, 0.0f, -30.0f);
+    int resized = 0, moved = 0;
+    for (int k = 1; k <= 60; ++k) {
+        scene::Camera camera = s.camera;
+        camera.position += step * static_cast<float>(k);
+        camera.target += step * static_cast<float>(k);
+        const LightSpace now = computeLightSpace(s.sun, res, s.bounds, camera, 16.0f / 9.0f);
+        if (now.viewProj[0] != before.viewProj[0]) ++moved;
+        const glm::vec2 a = texelOf(before, probe), b = texelOf(now, probe);
+        if (std::abs(now.texelScale - before.texelScale) > 1e-6f * before.texelScale) {
+            ++resized;
+        } else {
+            const glm::vec2 tiles = (b - a) / 8.0f;
+            EXPECT_NEAR(tiles.x, std::round(tiles.x), 1e-3f) << "frame " << k;
+            EXPECT_NEAR(tiles.y, std::round(tiles.y), 1e-3f) << "frame " << k;
+        }
+        // Still covering what the camera looks at.
+        const glm::vec2 target = texelOf(now, camera.target) / static_cast<float>(res);
+        EXPECT_TRUE(target.x > 0.0f && target.x < 1.0f && target.y > 0.0f && target.y < 1.0f) << "frame " << k;
+        before = now;
+    }
+    std::printf("60 pan steps of 0.3 texel: the box moved %d times, resized %d times\n", moved, resized);
+    EXPECT_LE(resized, 3);
+    EXPECT_LT(moved, 30) << "the box must not follow every sub-texel step";
 }
 
 }  // namespace
