@@ -71,16 +71,25 @@ void Comparison::traceReference(int samples, bool showProgress, const Progress& 
     referenceSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace {
+
+render::RenderOptions optionsFor(const std::string& technique, int shadowResolution,
+                                 const shadows::ParameterValues& parameters) {
+    render::RenderOptions options;
+    options.technique = technique;
+    options.shadowResolution = shadowResolution;
+    options.parameters = parameters;
+    return options;
+}
+
+}  // namespace
+
 TechniqueScore Comparison::evaluate(const std::string& technique, int shadowResolution, int timedFrames,
                                     const shadows::ParameterValues& parameters) {
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;
-    render::RenderOptions options;
-    options.technique = technique;
-    options.shadowResolution = shadowResolution;
-    options.parameters = parameters;
-    render::Renderer renderer(scene_, options);
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));
 
     // Cost of the technique's real frames (shaded, translucency and fog included).
     render::OffscreenTarget target(width_, height_);
@@ -134,17 +143,14 @@ constexpr float kCrawlThreshold = 8.0f / 255.0f;
 
 MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowResolution, int frames,
                                        float pixelsPerFrame, const shadows::ParameterValues& parameters) {
-    render::RenderOptions options;
-    options.technique = technique;
-    options.shadowResolution = shadowResolution;
-    options.parameters = parameters;
-    render::Renderer renderer(scene_, options);
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const scene::Camera& start = scene_.camera;
     const glm::vec3 forward = glm::normalize(start.target - start.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, start.up));
+    const float targetDistance = glm::length(start.target - start.position);
     // World size of one pixel at the target's distance.
-    const float pixel = 2.0f * glm::length(start.target - start.position) *
+    const float pixel = 2.0f * targetDistance *
                         std::tan(glm::radians(start.fovDeg) * 0.5f) / static_cast<float>(height_);
 
     auto renderFrame = [&](int k) {
@@ -186,7 +192,7 @@ MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowR
                 if (corner.x < 0 || corner.y < 0 || corner.x + 1 >= width_ || corner.y + 1 >= height_) continue;
                 // The same surface: all four neighbours within a few pixels' size of the point
                 // (no disocclusion, no silhouette).
-                const float tolerance = 4.0f * pixel * std::max(1.0f, clip.w / glm::length(start.target - start.position));
+                const float tolerance = 4.0f * pixel * std::max(1.0f, clip.w / targetDistance);
                 std::array<std::size_t, 4> n{};
                 bool same = true;
                 for (int c = 0; c < 4; ++c) {

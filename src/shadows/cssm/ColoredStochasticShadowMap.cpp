@@ -5,6 +5,7 @@
 #include "gpu/ShaderContract.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace penumbra::shadows {
@@ -137,7 +138,8 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     casters_.set("uRandomGenerator", generator_);
     casters_.set("uXi", xi_);
     casters_.set("uIndependentChannels", variant_ == Variant::PerChannel ? 1 : 0);
-    casters_.set("uDitherBits", filter_ == gpu::kCssmBox64 ? 3 : 2);  // the dither period matches the box
+    // The dither period matches the tile: log2 of its side.
+    casters_.set("uDitherBits", static_cast<int>(std::bit_width(static_cast<unsigned>(tileSide()))) - 1);
     casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
     // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
     // depth (tested, not written), MIN-blended per channel.

@@ -26,9 +26,10 @@ void MomentShadowMap::buildPrograms() {
     const float scale = halfResolution_ ? 2.0f : 1.0f;
     const int taps = static_cast<int>(std::ceil(static_cast<float>(blurRadius_) / scale));
     const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / scale, 0.5f);
-    const std::vector<std::string> defines{"MOMENT_WARP " + std::to_string(static_cast<int>(warp_)),
-                                           "BLUR_RADIUS " + std::to_string(taps), "BLUR_SIGMA " + std::to_string(sigma),
-                                           std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0")};
+    std::vector<std::string> defines = lookupDefines();
+    defines.push_back("BLUR_RADIUS " + std::to_string(taps));
+    defines.push_back("BLUR_SIGMA " + std::to_string(sigma));
+    defines.push_back(std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0"));
     toMoments_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     blur_ = gl::Program::build(
@@ -101,8 +102,7 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
     m.scratch = gl::Texture::create2D(m.format, res, res);
-    m.scratchTarget.attach(GL_COLOR_ATTACHMENT0, m.scratch);
-    m.scratchTarget.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
     if (msaa) {  // llvmpipe offers at most 4 samples
         m.multisampledDepth = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, depth.resolution, depth.resolution, 4);
         m.multisampledTarget.attach(GL_DEPTH_ATTACHMENT, m.multisampledDepth);
