@@ -198,18 +198,18 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 if (selected(d, selection)) all.add(d.worldBounds);
             return all;
         };
-        frame.drawCasters = [&](const gl::Program& program, const shadows::CasterSelection& selection) {
+        frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
-                gpu_.draw(d, program);
+                gpu_.draw(d, programs.of(*d.material));
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
                     shadowTriangles_[static_cast<std::size_t>(selection.light)] += d.triangles;
             }
         };
-        frame.drawSurfaces = [&](const gl::Program& program, int onlyObject) {
+        frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
             for (const Draw& d : draws)
                 if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject)))
-                    gpu_.draw(d, program);
+                    gpu_.draw(d, programs.of(*d.material));
         };
         frame.scene = &scene_;
         frame.time = time;
@@ -351,7 +351,9 @@ void Renderer::setReceivers(std::vector<bool> own, bool ownPixelsOnly) {
 void Renderer::drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
     if (ownObjects_.empty()) return;
     if (!occluder_.id())  // the shadow passes' caster shaders, with the camera as the "light"
-        occluder_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
+        occluder_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
+                                        .fragment = "src/shadows/common/glsl/depth.frag",
+                                        .defines = {"ALPHA_TEST 1"}});
     occluder_.set("uLightViewProj", camera.projection(aspect) * camera.view());
     gl::PassState state = gl::PassState::depthOnly();
     state.colorWrite = glm::bvec4(false);

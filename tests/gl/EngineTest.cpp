@@ -118,6 +118,29 @@ TEST(LightLayout, LightsEditedBetweenFramesRebuildTheLighting) {
     EXPECT_EQ(visibility(1), std::pair(0.0f, 1.0f)) << "the spot turned into a point light (a cube map)";
 }
 
+// Alpha-tested casters go through their own depth program (DepthCasterProgram: the plain one
+// has no alpha test at all), in every kind of map: two opaque-textured plates over the ground,
+// one cut at 0.5 (every texel kept) and one at 1.1 (every texel a hole), 2 units up. Under a sun
+// at 45 degrees towards +x, their shadows fall clear of them, around x = -2 (pixel 31 of 96, at
+// ~8.6 px per unit) and x = +4 (pixel 82).
+class AlphaTestedCasters : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AlphaTestedCasters, CutOutTexelsCastNoShadow) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+        { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "quadrants.png", "alpha_cutoff": 0.5 } },
+        { "shape": "plane", "size": [2, 2], "position": [2, 2, 0], "material": { "texture": "quadrants.png", "alpha_cutoff": 1.1 } } ] })");
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, GetParam());
+    EXPECT_LT(f.at(31, 48).r, 0.1f) << "the kept plate shadows the ground";
+    EXPECT_NEAR(f.at(82, 48).r, 1.0f, 0.05f) << "the all-holes plate casts nothing";
+    EXPECT_NEAR(f.at(48, 48).r, 1.0f, 0.05f) << "open ground";
+}
+
+// One technique per kind of depth map: DepthAndTintMaps, LayeredDepthMap, moment maps.
+INSTANTIATE_TEST_SUITE_P(EveryDepthMap, AlphaTestedCasters, ::testing::Values("hard", "cascaded", "vsm"));
+
 TEST(Fog, FarSurfacesFadeToTheBackground) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_deg": 60, "far": 100 },

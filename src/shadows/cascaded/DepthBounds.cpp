@@ -8,10 +8,6 @@
 
 namespace penumbra::shadows {
 
-DepthBounds::DepthBounds() {
-    program_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
-}
-
 std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& frame) {
     // A quarter of the pixels is plenty for the bounds and keeps the read-back small.
     const glm::ivec2 size = glm::max(frame.viewport / 2, glm::ivec2(1));

@@ -5,6 +5,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "shadows/common/DepthCasterProgram.h"
 #include "shadows/ShadowTechnique.h"
 
 #include <optional>
@@ -14,7 +15,6 @@ namespace penumbra::shadows {
 
 class DepthBounds {
 public:
-    DepthBounds();
     // View distances (min, max) of the visible opaque surfaces; nullopt when nothing is visible.
     std::optional<std::pair<float, float>> measure(const ShadowFrame& frame);
 
@@ -22,7 +22,7 @@ private:
     gl::Texture depth_;
     gl::Framebuffer target_;
     glm::ivec2 size_{0};
-    gl::Program program_;
+    DepthCasterProgram program_;
 };
 
 }  // namespace penumbra::shadows

@@ -9,8 +9,6 @@ namespace penumbra::shadows {
 using scene::Light;
 
 DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
-    depthProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
-                                        .fragment = "src/shadows/common/glsl/depth.frag"});
     tintProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
                                        .fragment = "src/shadows/common/glsl/transmit.frag"});
 }

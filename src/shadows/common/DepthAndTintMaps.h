@@ -7,6 +7,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Sampler.h"
+#include "shadows/common/DepthCasterProgram.h"
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 
@@ -46,13 +47,14 @@ public:
     // The slots of the last rendered frame (lights without maps have slot -1).
     const ShadowSlots& slots() const { return slots_; }
     const LightMaps& maps(std::size_t light) const { return maps_[light]; }
-    const gl::Program& depthProgram() const { return depthProgram_; }  // opaque casters -> depth
+    const DepthCasterProgram& depthProgram() const { return depthProgram_; }  // opaque casters -> depth
 
 private:
     void ensure(std::size_t light, int resolution, bool cube);
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
-    gl::Program depthProgram_, tintProgram_;
+    DepthCasterProgram depthProgram_;
+    gl::Program tintProgram_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;

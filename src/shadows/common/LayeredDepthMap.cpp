@@ -8,11 +8,6 @@
 
 namespace penumbra::shadows {
 
-LayeredDepthMap::LayeredDepthMap() {
-    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
-                                   .fragment = "src/shadows/common/glsl/depth.frag"});
-}
-
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
                              const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes) {
     const int count = std::clamp(static_cast<int>(viewProj.size()), 1, kMaxLayers);

@@ -7,6 +7,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "shadows/common/DepthCasterProgram.h"
 #include "shadows/ShadowTechnique.h"
 
 #include <glm/glm.hpp>
@@ -18,7 +19,6 @@ class LayeredDepthMap {
 public:
     static constexpr int kMaxLayers = 16;
 
-    LayeredDepthMap();
     // Opaque casters of `frame` into layer i through viewProj[i]. clipPlanes (optional, world
     // space, one per layer) keep only the half-space dot(plane, P) >= 0.
     void render(const ShadowFrame& frame, const scene::Light& light, int resolution, const std::vector<glm::mat4>& viewProj,
@@ -34,7 +34,7 @@ private:
     gl::Texture view_;  // layer 0 as a plain 2D texture for the debug overlay
     std::vector<gl::Framebuffer> layerTargets_;  // one depth-only framebuffer per layer
     int resolution_ = 0, layers_ = 0;
-    gl::Program casters_;
+    DepthCasterProgram casters_;
 };
 
 }  // namespace penumbra::shadows

@@ -9,7 +9,6 @@
 namespace penumbra::shadows {
 
 ScreenShadowMask::ScreenShadowMask() {
-    depthProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"});
     stencilToMask_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/glsl/shadowed.frag"});
 }
 

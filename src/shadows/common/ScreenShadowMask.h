@@ -7,6 +7,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "shadows/common/DepthCasterProgram.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 
@@ -34,7 +35,8 @@ private:
     int layerCount_ = 0;
     glm::mat4 viewProj_{1.0f};
     glm::vec2 depthRange_{0.1f, 100.0f};
-    gl::Program depthProgram_, stencilToMask_;
+    DepthCasterProgram depthProgram_;
+    gl::Program stencilToMask_;
     gl::VertexArray emptyVao_;
 };
 

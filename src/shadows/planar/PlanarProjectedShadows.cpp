@@ -36,7 +36,7 @@ void PlanarProjectedShadows::renderMaps(const ShadowFrame& frame) {
             marking.depthWrite = false;
             marking.colorWrite = glm::bvec4(false);
             const gl::ScopedPassState state(marking);
-            const gl::Program& surfaces = maps_.depthProgram();  // plain positions; the light's matrix swapped for the camera's
+            const DepthCasterProgram& surfaces = maps_.depthProgram();  // plain positions; the light's matrix swapped for the camera's
             surfaces.set("uLightViewProj", mask_.viewProj());
             frame.drawSurfaces(surfaces, receiver_->object);
         }

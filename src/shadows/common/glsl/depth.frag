@@ -1,9 +1,12 @@
 #version 450 core
-// Depth of opaque casters; alpha-tested (MASK) texels leave holes. Without an alpha test the
-// texture is not read at all: the depth pass of a textured caster then costs what an untextured
-// one does (a uniform branch).
+// Depth of opaque casters. Only the ALPHA_TEST variant (materials with an alpha cutoff) has a
+// fragment stage that does anything: alpha-tested (MASK) texels leave holes. Every other caster
+// gets an empty one, with no `discard` that would cost llvmpipe its early depth write
+// (shadows/common/DepthCasterProgram.h).
+#ifdef ALPHA_TEST
 #include "shaders/common/material.glsl"
 in vec2 vUv;
-void main() {
-    if (uAlphaCutoff > 0.0) materialCoverage(materialTexel(vUv));
-}
+void main() { materialCoverage(materialTexel(vUv)); }
+#else
+void main() {}
+#endif
