@@ -74,6 +74,36 @@ TEST(Culling, ATranslucentCasterLeavingTheLightLeavesNoStaleTint) {
     EXPECT_LT(glm::length(centreAt(2.0f) - tinted), 0.02f) << "the pane is back";
 }
 
+// Tint maps are cleared only where translucent casters were last drawn (MapRegion): a pane
+// moving inside a spot's cone, from x = -1 to x = +1 at height 2, tints the ground around
+// x = -1.67 (pixel 8 of 32) and then around x = +1.67 (pixel 24), and leaves no trail.
+class MovingPane : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MovingPane, LeavesNoTintBehindInsideTheLight) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 60 },
+      "lights": [ { "type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "angle_deg": 100, "range": 20 } ],
+      "objects": [ { "shape": "plane", "size": [10, 10] },
+                   { "shape": "plane", "size": [1, 1], "material": { "transmission": [0.1, 0.9, 0.1] },
+                     "animation": [[0, -1, 2, 0], [1, 1, 2, 0], [2, -1, 2, 0]] } ] })");
+    render::RenderOptions options;
+    options.technique = GetParam();
+    options.output = OutputMode::Visibility;
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(32, 32);
+    const glm::vec3 tinted(0.1f, 0.9f, 0.1f), white(1.0f);
+    auto at = [&](float time, int x) {
+        renderer.render(time, s.camera, 32, 32, target.framebuffer());
+        return Frame{32, 32, renderer.readLinear()}.at(x, 16);
+    };
+    EXPECT_LT(glm::length(at(0.0f, 8) - tinted), 0.05f) << "under the pane at its start";
+    EXPECT_LT(glm::length(at(0.0f, 24) - white), 0.02f) << "where it is going";
+    EXPECT_LT(glm::length(at(1.0f, 8) - white), 0.02f) << "where it was: no stale tint";
+    EXPECT_LT(glm::length(at(1.0f, 24) - tinted), 0.05f) << "under the pane at its end";
+}
+
+INSTANTIATE_TEST_SUITE_P(TintMaps, MovingPane, ::testing::Values("hard", "cssm2"));
+
 // The view-dependent maps keep the sun's depth in layers of their own: each opaque caster is
 // drawn once per layer it reaches, and the sun's plain depth map (kept for the coloured tint)
 // is drawn only when a translucent caster needs it as the tint pass's depth test.

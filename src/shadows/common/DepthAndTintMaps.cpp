@@ -46,7 +46,8 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
         depthOnly.checkComplete("shadow depth map " + std::to_string(res));
         m.depthFaces.push_back(std::move(depthOnly));
         m.tintFaces.push_back(std::move(withTint));
-        m.tintWhite.push_back(!withTint_);  // a new map's contents are undefined until cleared
+        // A new map's contents are undefined until cleared.
+        m.tintDirty.push_back(withTint_ ? TexelRect(0, 0, res, res) : TexelRect(0));
     }
 }
 
@@ -61,7 +62,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
-    const float white[4] = {1, 1, 1, 1};
+    const glm::vec4 white(1.0f);
     const float farDepth = 1.0f;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!slots_.shadowed(i)) continue;
@@ -86,12 +87,11 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];
             const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
-            const bool anyTranslucent = withTint_ && (!frame.countCasters || frame.countCasters(translucent) > 0);
+            const TexelRect tinted = withTint_ ? texelRect(frame.casterBounds(translucent), vp, ls.resolution) : TexelRect(0);
+            const bool anyTranslucent = !isEmpty(tinted);
             if (static_cast<int>(i) == depthElsewhere && !anyTranslucent) {
-                if (withTint_ && !m.tintWhite[face]) {
-                    glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
-                    m.tintWhite[face] = true;
-                }
+                clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
+                m.tintDirty[face] = TexelRect(0);
                 continue;
             }
             {
@@ -102,9 +102,8 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
                 frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
             }
             if (!withTint_) continue;
-            if (!anyTranslucent && m.tintWhite[face]) continue;  // still white: no clear, no pass
-            glClearNamedFramebufferfv(m.tintFaces[face].id(), GL_COLOR, 0, white);
-            m.tintWhite[face] = !anyTranslucent;
+            clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
+            m.tintDirty[face] = tinted;
             if (!anyTranslucent) continue;
             m.tintFaces[face].bind();
             const gl::ScopedPassState state(tintPass);

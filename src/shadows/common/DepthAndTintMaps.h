@@ -8,6 +8,7 @@
 #include "gl/Program.h"
 #include "gl/Sampler.h"
 #include "shadows/common/DepthCasterProgram.h"
+#include "shadows/common/MapRegion.h"
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 
@@ -25,9 +26,10 @@ public:
         // Per face (6 for cubes): depth only for the opaque pass (llvmpipe then never touches
         // the colour tiles), depth + colour for the translucent pass.
         std::vector<gl::Framebuffer> depthFaces, tintFaces;
-        // Per face: the tint map is known to hold white (cleared, nothing translucent drawn since),
-        // so a frame with no translucent caster in the face's view skips its clear and pass.
-        std::vector<bool> tintWhite;
+        // Per face: the texels that may hold something other than white (where translucent
+        // casters were last drawn), so that the next frame clears only those, and a face with no
+        // translucent caster in view, already white, has neither a clear nor a pass.
+        std::vector<TexelRect> tintDirty;
     };
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).

@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
+#include "shadows/common/MapRegion.h"
 
 #include <algorithm>
 #include <bit>
@@ -81,42 +82,12 @@ bool ColoredStochasticShadowMap::usesTiles() const {
 
 int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmBox64 ? 8 : 4; }
 
-// The texels of a square map of `resolution` that `bounds` can cover through `viewProj`
-// (x0, y0, x1, y1, exclusive; empty when x0 >= x1): the whole map when a corner lies behind a
-// perspective light's eye, where its projection would flip.
-static glm::ivec4 texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution) {
-    if (bounds.empty()) return glm::ivec4(0);
-    glm::vec2 lo(1e9f), hi(-1e9f);
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec4 c = viewProj * glm::vec4((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                                                 (i & 4) ? bounds.max.z : bounds.min.z, 1.0f);
-        if (c.w <= 1e-6f) return {0, 0, resolution, resolution};
-        const glm::vec2 ndc = glm::vec2(c) / c.w;
-        lo = glm::min(lo, ndc);
-        hi = glm::max(hi, ndc);
-    }
-    const glm::vec2 first = glm::floor((glm::clamp(lo, -1.0f, 1.0f) * 0.5f + 0.5f) * float(resolution)) - 1.0f;
-    const glm::vec2 last = glm::ceil((glm::clamp(hi, -1.0f, 1.0f) * 0.5f + 0.5f) * float(resolution)) + 1.0f;
-    return glm::clamp(glm::ivec4(first.x, first.y, last.x, last.y), 0, resolution);
-}
-
-// White ("nothing occludes") wherever the face may hold anything else.
-void ColoredStochasticShadowMap::clearToWhite(LightMap& m, std::size_t face) {
-    const glm::ivec4 r = m.dirty[face];
-    if (r.x >= r.z || r.y >= r.w) return;
-    const float white[4] = {1, 1, 1, 1};
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
-    glClearNamedFramebufferfv(m.targets[face].id(), GL_COLOR, 0, white);
-    glDisable(GL_SCISSOR_TEST);
-}
-
 // Tile statistics of face `face` (tiles.frag) over the tiles that `rect` (texels) touches; every
 // other tile holds zeros, i.e. no translucent layer.
-void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const glm::ivec4& rect) {
+void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect) {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
-    if (rect.x >= rect.z || rect.y >= rect.w) return;
+    if (isEmpty(rect)) return;
     const glm::ivec2 first = glm::ivec2(rect.x, rect.y) / m.tileSide;
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
     const gl::ScopedPassState state(gl::PassState::fullscreen());
@@ -161,13 +132,13 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             const scene::Bounds casters = frame.casterBounds(translucent);
             glViewport(0, 0, m.resolution, m.resolution);
             m.targets[f].bind();
-            const glm::ivec4 rect = texelRect(casters, ls.viewProj[f], m.resolution);
+            const TexelRect rect = texelRect(casters, ls.viewProj[f], m.resolution);
             if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
-                clearToWhite(m, f);
+                clearColourIn(m.targets[f].id(), m.dirty[f], glm::vec4(1.0f));  // white where it may hold anything
                 m.dirty[f] = rect;
             } else {  // 1 (white) where nothing opaque is
                 const gl::ScopedPassState state(copyPass);
-                m.dirty[f] = glm::ivec4(0, 0, m.resolution, m.resolution);
+                m.dirty[f] = TexelRect(0, 0, m.resolution, m.resolution);
                 copy_.use();
                 depthSampler_.bind(0);
                 m.depthFaces[f].bind(0);

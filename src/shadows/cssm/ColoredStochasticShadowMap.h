@@ -5,6 +5,7 @@
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/MapRegion.h"
 #include "shadows/common/PoissonDisk.h"
 #include "shadows/cssm/CssmFilter.h"
 
@@ -54,7 +55,7 @@ private:
         std::vector<gl::Framebuffer> targets;   // colour face + the depth map face (depth test)
         // Per face: the texels (x0, y0, x1, y1) that may hold something other than white, so that
         // the next frame clears only those (a 2048² RGBA32F clear is 64 MiB of writes).
-        std::vector<glm::ivec4> dirty;
+        std::vector<TexelRect> dirty;
         int tileSide = 0;                       // with coverage: tiles.frag's statistics
         gl::Texture tiles;                      // RGBA32F (2D or cube), one texel per side x side tile
         std::vector<gl::Texture> colourFaces;   // 2D views of the colour map's faces (tiles input)
@@ -63,8 +64,7 @@ private:
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
     int tileSide() const;
-    void renderTiles(LightMap& m, std::size_t face, const glm::ivec4& rect);
-    void clearToWhite(LightMap& m, std::size_t face);
+    void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect);
 
     Variant variant_;
     int filter_ = gpu::kCssmBox64, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
