@@ -1,6 +1,6 @@
 #version 450 core
-// End of frame: distance fog towards the background before the far plane (Nápravník 2020, "Mlha"),
-// clamp (no tone mapping) and sRGB encoding.
+// End of frame: distance fog towards the background before the far plane (Nápravník 2020, "Mlha";
+// compiled in with FOG, see render/Renderer.cpp), clamp (no tone mapping) and sRGB encoding.
 #include "../common/color.glsl"
 in vec2 vUv;
 layout(binding = 0) uniform sampler2D uHdr;
@@ -8,7 +8,6 @@ layout(binding = 1) uniform sampler2D uDepth;
 uniform mat4 uInvProj;
 uniform vec3 uBackground;
 uniform vec2 uFog;        // start, end distances from the camera
-uniform int uFogEnabled;
 uniform int uEncodeSrgb;  // 0: pass linear values through (debug channels)
 uniform int uOwnPixelsOnly;  // 1: keep the target where another renderer owns the pixel (alpha 0)
 layout(location = 0) out vec4 outColor;
@@ -17,11 +16,13 @@ void main() {
     vec4 hdr = texture(uHdr, vUv);
     if (uOwnPixelsOnly != 0 && hdr.a < 0.5) discard;
     vec3 color = hdr.rgb;
+#ifdef FOG
     float depth = texture(uDepth, vUv).r;
-    if (uFogEnabled != 0 && depth < 1.0) {
+    if (depth < 1.0) {
         vec4 view = uInvProj * vec4(vUv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
         float distance = length(view.xyz / view.w);
         color = mix(color, uBackground, smoothstep(uFog.x, uFog.y, distance));
     }
+#endif
     outColor = vec4(uEncodeSrgb != 0 ? linearToSrgb(color) : color, 1.0);
 }

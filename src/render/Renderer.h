@@ -124,7 +124,7 @@ private:
     RenderOptions options_;
     GpuScene gpu_;
     std::unique_ptr<shadows::ShadowTechnique> technique_;
-    gl::Program lighting_, resolve_, overlay_, lines_;
+    gl::Program lighting_, resolve_, foggedResolve_, overlay_, lines_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     gl::Program occluder_;  // depth of the objects another renderer shades (built on first use)
