@@ -48,16 +48,22 @@ TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
     EXPECT_EQ(renderer.shadowTriangles()[1], box) << "the spot looks at the +x box only";
 }
 
+// A green pane (t = 0.1, 0.9, 0.1) moving along `animation` over the ground, under a spot
+// straight down from (0, 5, 0) with cone `angleDeg`; the camera looks down from (0, 6, 0).
+scene::Scene paneUnderASpot(int fovDeg, int angleDeg, const std::string& animation) {
+    return sceneFromJson(R"({
+      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": )" + std::to_string(fovDeg) + R"( },
+      "lights": [ { "type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "angle_deg": )" + std::to_string(angleDeg) + R"(, "range": 20 } ],
+      "objects": [ { "shape": "plane", "size": [10, 10] },
+                   { "shape": "plane", "size": [1, 1], "material": { "transmission": [0.1, 0.9, 0.1] },
+                     "animation": )" + animation + " } ] }");
+}
+
 // A light with no translucent caster in view skips its tint clear and pass once the map is
 // white. A pane that leaves the spot's cone must not leave its tint behind, and its return must
 // bring the tint back.
 TEST(Culling, ATranslucentCasterLeavingTheLightLeavesNoStaleTint) {
-    scene::Scene s = sceneFromJson(R"({
-      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 30 },
-      "lights": [ { "type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "angle_deg": 40, "range": 20 } ],
-      "objects": [ { "shape": "plane", "size": [10, 10] },
-                   { "shape": "plane", "size": [1, 1], "material": { "transmission": [0.1, 0.9, 0.1] },
-                     "animation": [[0, 0, 2, 0], [1, 8, 2, 0], [2, 0, 2, 0]] } ] })");
+    scene::Scene s = paneUnderASpot(30, 40, "[[0, 0, 2, 0], [1, 8, 2, 0], [2, 0, 2, 0]]");
     render::RenderOptions options;
     options.technique = "hard";
     options.output = OutputMode::Visibility;
@@ -80,12 +86,7 @@ TEST(Culling, ATranslucentCasterLeavingTheLightLeavesNoStaleTint) {
 class MovingPane : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MovingPane, LeavesNoTintBehindInsideTheLight) {
-    scene::Scene s = sceneFromJson(R"({
-      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 60 },
-      "lights": [ { "type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "angle_deg": 100, "range": 20 } ],
-      "objects": [ { "shape": "plane", "size": [10, 10] },
-                   { "shape": "plane", "size": [1, 1], "material": { "transmission": [0.1, 0.9, 0.1] },
-                     "animation": [[0, -1, 2, 0], [1, 1, 2, 0], [2, -1, 2, 0]] } ] })");
+    scene::Scene s = paneUnderASpot(60, 100, "[[0, -1, 2, 0], [1, 1, 2, 0], [2, -1, 2, 0]]");
     render::RenderOptions options;
     options.technique = GetParam();
     options.output = OutputMode::Visibility;
