@@ -10,7 +10,11 @@ uniform float uAlpha;          // coverage (McGuire & Enderton 2011)
 uniform vec3 uTransmission;    // t_rgb
 uniform float uAlphaCutoff;    // > 0: alpha test
 
+#ifdef MATERIAL_UNTEXTURED  // render/LightingProgram.h: no sample even under a false uniform branch
+vec4 materialTexel(vec2 uv) { return vec4(1.0); }
+#else
 vec4 materialTexel(vec2 uv) { return uHasTexture != 0 ? texture(uDiffuseTexture, uv) : vec4(1.0); }
+#endif
 
 // Coverage after the texture's alpha; fragments under the alpha-test cutoff are dropped.
 float materialCoverage(vec4 texel) {

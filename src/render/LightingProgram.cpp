@@ -25,4 +25,24 @@ gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std:
                                .includeOverrides = {{"shadow_lookup.glsl", lookup}}});
 }
 
+LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial)
+    : lookup_(std::move(lookup)), defines_(std::move(defines)) {
+    scene::Material first;
+    if (anyTexturedMaterial) first.diffuseTexture = 0;
+    of(first);
+}
+
+const gl::Program& LightingPrograms::of(const scene::Material& material) {
+    if (material.diffuseTexture >= 0) {
+        if (!general_.id()) general_ = buildLightingProgram(lookup_, defines_);
+        return general_;
+    }
+    if (!untextured_.id()) {
+        std::vector<std::string> defines = defines_;
+        defines.emplace_back("MATERIAL_UNTEXTURED 1");
+        untextured_ = buildLightingProgram(lookup_, defines);
+    }
+    return untextured_;
+}
+
 }  // namespace penumbra::render

@@ -88,7 +88,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     configure(*technique_, options_);
     lightLayout_ = initialLightLayout(scene_.lights);
     lightingDefines_ = lightingDefines(*technique_);
-    lighting_ = buildLightingProgram(technique_->lookupShader(), lightingDefines_);
+    lighting_ = buildLighting(*technique_, lightingDefines_);
     PassPrograms passes = buildPassPrograms();
     resolve_ = std::move(passes.resolve);
     foggedResolve_ = std::move(passes.foggedResolve);
@@ -100,7 +100,7 @@ void Renderer::setTechnique(const std::string& name) {
     auto technique = shadows::createTechnique(name);
     configure(*technique, options_);
     std::vector<std::string> defines = lightingDefines(*technique);
-    gl::Program lighting = buildLightingProgram(technique->lookupShader(), defines);
+    LightingPrograms lighting = buildLighting(*technique, defines);
     technique_ = std::move(technique);
     lighting_ = std::move(lighting);
     lightingDefines_ = std::move(defines);
@@ -115,7 +115,7 @@ std::string Renderer::reloadShaders() {
         for (const auto& p : technique_->parameters()) current.emplace_back(p.name, p.text());
         shadows::applyParameters(technique->parameters(), current);
         std::vector<std::string> defines = lightingDefines(*technique);
-        gl::Program lighting = buildLightingProgram(technique->lookupShader(), defines);
+        LightingPrograms lighting = buildLighting(*technique, defines);
         PassPrograms passes = buildPassPrograms();
         technique_ = std::move(technique);
         lighting_ = std::move(lighting);
@@ -280,9 +280,17 @@ void Renderer::useLightLayout(std::vector<std::string> layout) {
     lightLayout_ = std::move(layout);
     std::vector<std::string> defines = lightingDefines(*technique_);
     if (defines == lightingDefines_) return;
-    lighting_ = buildLightingProgram(technique_->lookupShader(), defines);
+    lighting_ = buildLighting(*technique_, defines);
     lightingDefines_ = std::move(defines);
     oit_.reset();
+}
+
+LightingPrograms Renderer::buildLighting(const shadows::ShadowTechnique& technique, std::vector<std::string> defines) const {
+    bool anyTextured = false;
+    for (const auto& object : scene_.objects)
+        for (const auto& part : scene_.meshes[static_cast<std::size_t>(object.mesh)].parts)
+            anyTextured = anyTextured || scene_.material(object, part).diffuseTexture >= 0;
+    return {technique.lookupShader(), std::move(defines), anyTextured};
 }
 
 std::vector<std::string> Renderer::lightingDefines(const shadows::ShadowTechnique& technique) const {
@@ -330,7 +338,12 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
 }
 
 void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
-    prepareLighting(lighting_, translucent, camera, aspect);
+    const auto drawn = [&](const Draw& d) {
+        return d.translucent == translucent && d.visible && (translucent || ownObject(d.object));
+    };
+    for (const Draw& d : draws)
+        if (drawn(d)) lighting_.of(*d.material);  // builds what this pass needs before it is prepared
+    lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
     if (translucent) {
@@ -340,9 +353,10 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     for (const Draw& d : draws) {
-        if (d.translucent != translucent || !d.visible || (!translucent && !ownObject(d.object))) continue;
-        if (byTriangle) gpu_.drawTrianglesSorted(d, lighting_, camera.position);
-        else gpu_.draw(d, lighting_);
+        if (!drawn(d)) continue;
+        const gl::Program& program = lighting_.of(*d.material);
+        if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
+        else gpu_.draw(d, program);
     }
 }
 

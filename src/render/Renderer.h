@@ -10,6 +10,7 @@
 #include "gl/VertexArray.h"
 #include "render/FrameTimer.h"
 #include "render/GpuScene.h"
+#include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
@@ -117,6 +118,7 @@ private:
     std::vector<std::string> lightingDefines(const shadows::ShadowTechnique& technique) const;
     void drawDebugLines(const scene::Camera& camera, float aspect);
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
+    LightingPrograms buildLighting(const shadows::ShadowTechnique& technique, std::vector<std::string> defines) const;
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
     void drawOverlay(GLuint target, int width, int height);
 
@@ -124,7 +126,8 @@ private:
     RenderOptions options_;
     GpuScene gpu_;
     std::unique_ptr<shadows::ShadowTechnique> technique_;
-    gl::Program lighting_, resolve_, foggedResolve_, overlay_, lines_;
+    LightingPrograms lighting_;
+    gl::Program resolve_, foggedResolve_, overlay_, lines_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     gl::Program occluder_;  // depth of the objects another renderer shades (built on first use)
