@@ -194,9 +194,6 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
                    !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
         };
-        frame.countCasters = [&](const shadows::CasterSelection& selection) {
-            return static_cast<std::size_t>(std::count_if(draws.begin(), draws.end(), [&](const Draw& d) { return selected(d, selection); }));
-        };
         frame.casterBounds = [&](const shadows::CasterSelection& selection) {
             scene::Bounds all;
             for (const Draw& d : draws)

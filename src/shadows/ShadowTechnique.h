@@ -65,8 +65,6 @@ struct ShadowFrame {
     // and material uniforms are set, the diffuse texture is on unit 0); the caller sets the
     // light's matrices.
     std::function<void(DrawPrograms programs, const CasterSelection& selection)> drawCasters;
-    // How many caster draws `drawCasters` would issue for `selection` (0: the pass can be skipped).
-    std::function<std::size_t(const CasterSelection& selection)> countCasters;
     // The world bounds of the casters `drawCasters` would draw for `selection` (empty: none), so
     // that passes over a map can be limited to where those casters can have written.
     std::function<scene::Bounds(const CasterSelection& selection)> casterBounds;

@@ -89,11 +89,10 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
             const TexelRect tinted = withTint_ ? texelRect(frame.casterBounds(translucent), vp, ls.resolution) : TexelRect(0);
             const bool anyTranslucent = !isEmpty(tinted);
-            if (static_cast<int>(i) == depthElsewhere && !anyTranslucent) {
-                clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
-                m.tintDirty[face] = TexelRect(0);
-                continue;
-            }
+            // White where the last translucent casters were (nothing without a tint map).
+            clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
+            m.tintDirty[face] = tinted;
+            if (static_cast<int>(i) == depthElsewhere && !anyTranslucent) continue;
             {
                 const gl::ScopedPassState state(opaquePass);
                 m.depthFaces[face].bind();
@@ -101,9 +100,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
                 depthProgram_.set("uLightViewProj", vp);
                 frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
             }
-            if (!withTint_) continue;
-            clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
-            m.tintDirty[face] = tinted;
             if (!anyTranslucent) continue;
             m.tintFaces[face].bind();
             const gl::ScopedPassState state(tintPass);

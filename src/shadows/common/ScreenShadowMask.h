@@ -7,9 +7,9 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "shadows/common/DepthCasterProgram.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
+#include "shadows/common/DepthCasterProgram.h"
 
 namespace penumbra::shadows {
 
