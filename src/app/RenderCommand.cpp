@@ -37,6 +37,13 @@ long residentKiB() {
     return resident * (::sysconf(_SC_PAGESIZE) / 1024);
 }
 
+// Memory the process holds through malloc (the driver's included): unlike resident memory, it
+// does not depend on which freed pages the allocator and the kernel happen to keep.
+long heapInUseKiB() {
+    const struct mallinfo2 m = ::mallinfo2();
+    return static_cast<long>((m.uordblks + m.hblkhd) / 1024);
+}
+
 int drainGlErrors() {
     int n = 0;
     while (glGetError() != GL_NO_ERROR && n < 1000) ++n;
@@ -100,7 +107,7 @@ BatchResult renderBatch(const BatchJob& job) {
     auto sample = [&](int frame) {
         glFinish();
         result.soak.push_back({frame, renderer.technique().name(), width, height, renderer.options().shadowResolution,
-                               residentKiB(), gl::liveObjectCount(), renderer.shadowMemoryBytes(), drainGlErrors()});
+                               residentKiB(), heapInUseKiB(), gl::liveObjectCount(), renderer.shadowMemoryBytes(), drainGlErrors()});
     };
     const bool soaking = job.cycleTechniquesEvery > 0 || job.cycleSizesEvery > 0;
     if (soaking) sample(0);
@@ -200,7 +207,7 @@ BatchResult renderBatch(const BatchJob& job) {
         nlohmann::json soak = nlohmann::json::array();
         for (const SoakSample& s : result.soak)
             soak.push_back({{"frame", s.frame}, {"technique", s.technique}, {"width", s.width}, {"height", s.height},
-                            {"shadow_resolution", s.shadowResolution}, {"rss_kib", s.rssKiB}, {"gl_objects", s.glObjects},
+                            {"shadow_resolution", s.shadowResolution}, {"rss_kib", s.rssKiB}, {"heap_kib", s.heapKiB}, {"gl_objects", s.glObjects},
                             {"shadow_memory_bytes", s.shadowMemoryBytes}, {"gl_errors", s.glErrors}});
         stats["soak"] = soak;
     }

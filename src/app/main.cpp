@@ -38,18 +38,20 @@ int runRender(const app::BatchJob& job) {
     else
         std::printf("wrote %s (no PNG: --png-every 0)\n", r.statsFile.string().c_str());
     if (!r.soak.empty()) {
-        long maxRss = 0, maxObjects = 0;
+        long maxRss = 0, maxHeap = 0, maxObjects = 0;
         int errors = 0;
         for (const auto& s : r.soak) {
             maxRss = std::max(maxRss, s.rssKiB);
+            maxHeap = std::max(maxHeap, s.heapKiB);
             maxObjects = std::max(maxObjects, s.glObjects);
             errors += s.glErrors;
         }
         const auto& first = r.soak.front();
         const auto& last = r.soak.back();
-        std::printf("soak over %d frames, %zu samples: RSS first %.1f / last %.1f / max %.1f MiB; live GL objects first %ld / "
-                    "last %ld / max %ld; GL errors %d\n",
-                    r.frames, r.soak.size(), first.rssKiB / 1024.0, last.rssKiB / 1024.0, maxRss / 1024.0, first.glObjects,
+        std::printf("soak over %d frames, %zu samples: RSS first %.1f / last %.1f / max %.1f MiB; malloc'd first %.1f / last %.1f / "
+                    "max %.1f MiB; live GL objects first %ld / last %ld / max %ld; GL errors %d\n",
+                    r.frames, r.soak.size(), first.rssKiB / 1024.0, last.rssKiB / 1024.0, maxRss / 1024.0,
+                    first.heapKiB / 1024.0, last.heapKiB / 1024.0, maxHeap / 1024.0, first.glObjects,
                     last.glObjects, maxObjects, errors);
     }
     return 0;
