@@ -21,6 +21,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
             ->check(CLI::Range(16, 16384));
     command.add_option("--anisotropy", options.anisotropy, "anisotropic filtering of textures and projector pictures, 1-16 (default 1: trilinear)")
         ->check(CLI::Range(1, 16));
+    command.add_flag_callback(
+        "--redraw-shadow-maps", [&options] { options.reuseStillCasters = false; },
+        "redraw every shadow map every frame (default: keep what still casters drew while they and the light stay put)");
     command.add_option_function<std::vector<std::string>>(
         "--param",
         [&options](const std::vector<std::string>& texts) {

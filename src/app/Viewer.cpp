@@ -166,6 +166,7 @@ void drawPanel(render::Renderer& renderer, const render::RegionView* regions, Vi
             ImGui::SliderInt("peel layers", &renderer.options().peelLayers, 1, 16);
         int anisotropy = renderer.options().anisotropy;
         if (ImGui::SliderInt("anisotropy", &anisotropy, 1, 16)) renderer.setAnisotropy(anisotropy);
+        ImGui::Checkbox("keep still casters' shadow maps", &renderer.options().reuseStillCasters);
         ImGui::Checkbox("animate (space)", &state.animate);
         ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
         int mode = static_cast<int>(controller.mode());

@@ -114,7 +114,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
          {{"width", settings.width}, {"height", settings.height}, {"frames", settings.frames}, {"seconds", settings.seconds},
           {"warmup_seconds", settings.warmupSeconds}, {"scene_step_seconds", settings.sceneStep},
           {"calibrate", settings.calibrate}, {"fixed_camera", settings.fixedCamera}, {"transparency", render::toString(settings.render.transparency)},
-          {"parameters", parameters}}},
+          {"reuse_still_casters", settings.render.reuseStillCasters}, {"parameters", parameters}}},
         {"baseline", baseline ? json(baseline->value("created", "")) : json(nullptr)},
         {"cases", cases},
     };

@@ -48,6 +48,7 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             const bool textureAlpha = mat.diffuseTexture >= 0 && mat.alphaCutoff <= 0 &&
                                       scene_.images[static_cast<std::size_t>(mat.diffuseTexture)].hasTranslucentAlpha();
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
+            d.moving = !obj.animation.empty();
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

@@ -19,6 +19,7 @@ struct Draw {
     bool translucent;
     bool castsShadow;
     bool visible;
+    bool moving = false;  // the object is animated: its transform may differ from frame to frame
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     std::size_t triangles = 0;

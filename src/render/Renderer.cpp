@@ -5,6 +5,7 @@
 #include "gpu/ShaderContract.h"
 #include "render/LightBlock.h"
 #include "render/LightingProgram.h"
+#include "util/Digest.h"
 #include "util/Log.h"
 
 #include <algorithm>
@@ -191,7 +192,9 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.sceneBounds = bounds;
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const auto selected = [](const Draw& d, const shadows::CasterSelection& selection) {
+            using shadows::Motion;
             return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
+                   (selection.motion == Motion::Any || d.moving == (selection.motion == Motion::Moving)) &&
                    !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
         };
         frame.casterBounds = [&](const shadows::CasterSelection& selection) {
@@ -200,6 +203,13 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 if (selected(d, selection)) all.add(d.worldBounds);
             return all;
         };
+        frame.casterDigest = [&](const shadows::CasterSelection& selection) {
+            util::Digest digest;
+            for (const Draw& d : draws)
+                if (selected(d, selection)) digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
+            return digest.value();
+        };
+        frame.reuseStillCasters = options_.reuseStillCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;

@@ -51,6 +51,10 @@ struct RenderOptions {
     // (trilinear) by default, as bgfx, Filament and osg sample: measured on llvmpipe (default
     // scene, 1280x720) 8x doubled the opaque pass (40 -> 88 ms) and the shadow pass (17 -> 30 ms).
     int anisotropy = 1;
+    // Keep the depth that still (unanimated) casters leave in a light's map while the light, its
+    // map and those casters stay put, and redraw only what moves (shadows::ShadowFrame). false
+    // redraws every map every frame: the bare per-frame cost, for peer comparisons.
+    bool reuseStillCasters = true;
     // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
     // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
     bool requireRegions = false;

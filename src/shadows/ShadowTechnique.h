@@ -31,6 +31,10 @@ namespace penumbra::shadows {
 // transmission > 0) tint (McGuire & Enderton 2011).
 enum class Casters { Opaque, Translucent };
 
+// Which casters by motion: animated objects (`Moving`) or the others (`Still`), whose transforms
+// change only when someone edits the scene.
+enum class Motion { Any, Still, Moving };
+
 // Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip
 // volume of `cull` (a light's view-projection, one cube face's, ...) are skipped: a caster
 // outside a light's view volume cannot shadow anything inside it. nullopt draws every caster
@@ -40,6 +44,7 @@ struct CasterSelection {
     Casters casters = Casters::Opaque;
     std::optional<glm::mat4> cull;
     int light = -1;
+    Motion motion = Motion::Any;
 };
 
 // The program each caster draw uses: `plain` for most materials, `alphaTested` for materials
@@ -68,6 +73,12 @@ struct ShadowFrame {
     // The world bounds of the casters `drawCasters` would draw for `selection` (empty: none), so
     // that passes over a map can be limited to where those casters can have written.
     std::function<scene::Bounds(const CasterSelection& selection)> casterBounds;
+    // A digest of what `drawCasters` would draw for `selection`: which parts, their transforms
+    // and the materials' alpha tests. Equal digests in two frames mean equal depth written, so a
+    // map of still casters can be kept (DepthAndTintMaps). Never 0.
+    std::function<std::uint64_t(const CasterSelection& selection)> casterDigest;
+    // false: every map is redrawn every frame (`--redraw-shadow-maps`: the bare per-frame cost).
+    bool reuseStillCasters = true;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0), each
     // with its material's program of `programs` bound: depth pre-passes and receiver masks of
     // screen-space techniques.

@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
+#include "util/Digest.h"
 
 namespace penumbra::shadows {
 
@@ -49,6 +50,56 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
         // A new map's contents are undefined until cleared.
         m.tintDirty.push_back(withTint_ ? TexelRect(0, 0, res, res) : TexelRect(0));
     }
+    const std::size_t faces = cube ? 6 : 1;
+    m.depthHolds.assign(faces, 0);
+    m.stillHolds.assign(faces, 0);
+    m.tintHolds.assign(faces, 0);
+}
+
+void DepthAndTintMaps::ensureStill(LightMaps& m) {
+    if (m.still.id() != 0) return;
+    m.still = m.cube ? gl::Texture::createCube(GL_DEPTH_COMPONENT32F, m.resolution)
+                     : gl::Texture::create2D(GL_DEPTH_COMPONENT32F, m.resolution, m.resolution);
+    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
+        gl::Framebuffer fb;
+        if (m.cube) fb.attachLayer(GL_DEPTH_ATTACHMENT, m.still, f);
+        else fb.attach(GL_DEPTH_ATTACHMENT, m.still);
+        fb.setNoColor();
+        fb.checkComplete("still casters' depth map " + std::to_string(m.resolution));
+        m.stillFaces.push_back(std::move(fb));
+    }
+}
+
+void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std::size_t face, int light,
+                                    std::uint64_t stillKey, bool moving) {
+    const glm::mat4& vp = (*frame.lightSpaces)[static_cast<std::size_t>(light)].viewProj[face];
+    const float farDepth = 1.0f;
+    const auto drawInto = [&](const gl::Framebuffer& fb, Motion motion) {
+        fb.bind();
+        glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
+        depthProgram_.set("uLightViewProj", vp);
+        frame.drawCasters(depthProgram_, {Casters::Opaque, vp, light, motion});
+    };
+    if (stillKey == 0) {  // nothing reused: every caster, every frame
+        drawInto(m.depthFaces[face], Motion::Any);
+        m.depthHolds[face] = 0;
+        return;
+    }
+    if (!moving) {
+        if (m.depthHolds[face] != stillKey) drawInto(m.depthFaces[face], Motion::Still);
+        m.depthHolds[face] = stillKey;
+        return;
+    }
+    ensureStill(m);
+    if (m.stillHolds[face] != stillKey) drawInto(m.stillFaces[face], Motion::Still);
+    m.stillHolds[face] = stillKey;
+    const GLenum target = m.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    const auto z = static_cast<GLint>(face);
+    glCopyImageSubData(m.still.id(), target, 0, 0, 0, z, m.depth.id(), target, 0, 0, 0, z, m.resolution, m.resolution, 1);
+    m.depthFaces[face].bind();
+    depthProgram_.set("uLightViewProj", vp);
+    frame.drawCasters(depthProgram_, {Casters::Opaque, vp, light, Motion::Moving});
+    m.depthHolds[face] = 0;
 }
 
 void DepthAndTintMaps::setFiltering(GLenum filter) {
@@ -63,7 +114,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
     const glm::vec4 white(1.0f);
-    const float farDepth = 1.0f;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!slots_.shadowed(i)) continue;
         const Light& light = lights[i];
@@ -83,23 +133,34 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
         gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
         tintPass.depthWrite = false;
         glViewport(0, 0, ls.resolution, ls.resolution);
+        const bool reuse = frame.reuseStillCasters && frame.casterDigest;
         for (int f = 0; f < ls.faceCount; ++f) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];
-            const CasterSelection translucent{Casters::Translucent, vp, static_cast<int>(i)};
+            const int light = static_cast<int>(i);
+            const CasterSelection translucent{Casters::Translucent, vp, light};
             const TexelRect tinted = withTint_ ? texelRect(frame.casterBounds(translucent), vp, ls.resolution) : TexelRect(0);
             const bool anyTranslucent = !isEmpty(tinted);
-            // White where the last translucent casters were (nothing without a tint map).
-            clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
-            m.tintDirty[face] = tinted;
-            if (static_cast<int>(i) == depthElsewhere && !anyTranslucent) continue;
+            const bool moving = reuse && !frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}).empty();
+            const std::uint64_t stillKey =
+                reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp, po).value() : 0;
+            // The tint depends on the translucent casters and, through the depth test, the opaque depth.
+            const std::uint64_t tintKey =
+                reuse && !moving ? util::Digest().add(stillKey, frame.casterDigest(translucent)).value() : 0;
+            const bool tintCurrent = tintKey != 0 && tintKey == m.tintHolds[face];
+            if (!tintCurrent) {
+                // White where the last translucent casters were (nothing without a tint map).
+                clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
+                m.tintDirty[face] = tinted;
+                m.tintHolds[face] = 0;
+            }
+            if (light == depthElsewhere && (!anyTranslucent || tintCurrent)) continue;
             {
                 const gl::ScopedPassState state(opaquePass);
-                m.depthFaces[face].bind();
-                glClearNamedFramebufferfv(m.depthFaces[face].id(), GL_DEPTH, 0, &farDepth);
-                depthProgram_.set("uLightViewProj", vp);
-                frame.drawCasters(depthProgram_, {Casters::Opaque, vp, static_cast<int>(i)});
+                renderOpaque(frame, m, face, light, stillKey, moving);
             }
+            if (tintCurrent) continue;
+            m.tintHolds[face] = tintKey;
             if (!anyTranslucent) continue;
             m.tintFaces[face].bind();
             const gl::ScopedPassState state(tintPass);
@@ -126,7 +187,7 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
 
 std::size_t DepthAndTintMaps::memoryBytes() const {
     std::size_t total = 0;
-    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes();
+    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
     return total;
 }
 

@@ -2,8 +2,14 @@
 // Per-light storage most shadow-map techniques share: an opaque-caster depth map (2D or cube)
 // and a transmittance ("tint") map of translucent casters in front of it (the per-light colour
 // buffer of Nápravník 2020). Which light has maps, and on which units, is the frame's
-// ShadowSlots. Reallocated when a light's resolution changes; both are
-// re-rendered every frame.
+// ShadowSlots. Reallocated when a light's resolution changes.
+//
+// Redrawn only where something changed (ShadowFrame::reuseStillCasters, on by default): a face
+// whose light, map and still casters (ShadowFrame::casterDigest) are as in the last frame keeps
+// its depth when no animated caster reaches it; when one does, the still casters' depth comes
+// from a copy kept in `still` and only the animated ones are drawn over it. The tint is redrawn
+// when the translucent casters or the opaque depth changed. Measured on llvmpipe, default scene
+// (one animated sphere): see the README's "Shadow maps of still casters".
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Sampler.h"
@@ -30,6 +36,12 @@ public:
         // casters were last drawn), so that the next frame clears only those, and a face with no
         // translucent caster in view, already white, has neither a clear nor a pass.
         std::vector<TexelRect> tintDirty;
+        // Per face, digests of what a map holds (0: unknown or something that moves): `depth`
+        // drawn from still casters only, `still` (allocated once an animated caster reaches the
+        // light), the tint.
+        std::vector<std::uint64_t> depthHolds, stillHolds, tintHolds;
+        gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
+        std::vector<gl::Framebuffer> stillFaces;
     };
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
@@ -53,6 +65,11 @@ public:
 
 private:
     void ensure(std::size_t light, int resolution, bool cube);
+    void ensureStill(LightMaps& maps);
+    // Makes face `face` of light `light`'s depth map hold this frame's opaque casters, drawing as
+    // little as the digests allow; `stillKey` is their digest (0: do not reuse).
+    void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, std::uint64_t stillKey,
+                      bool moving);
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
