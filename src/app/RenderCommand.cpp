@@ -37,8 +37,9 @@ long residentKiB() {
     return resident * (::sysconf(_SC_PAGESIZE) / 1024);
 }
 
-// Memory the process holds through malloc (the driver's included): unlike resident memory, it
-// does not depend on which freed pages the allocator and the kernel happen to keep.
+// Memory in use from malloc (the driver's included), as mallinfo2 counts it: the main arena and
+// mmapped chunks, not other threads' arenas. Unlike resident memory, it does not depend on which
+// freed pages the allocator and the kernel happen to keep.
 long heapInUseKiB() {
     const struct mallinfo2 m = ::mallinfo2();
     return static_cast<long>((m.uordblks + m.hblkhd) / 1024);

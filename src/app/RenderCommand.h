@@ -35,7 +35,7 @@ struct SoakSample {
     std::string technique;
     int width = 0, height = 0, shadowResolution = 0;
     long rssKiB = 0;
-    long heapKiB = 0;  // bytes glibc's malloc has handed out and not had back (mallinfo2)
+    long heapKiB = 0;  // KiB in use from glibc's malloc (mallinfo2: the main arena and mmapped chunks)
     long glObjects = 0;
     std::size_t shadowMemoryBytes = 0;
     int glErrors = 0;

@@ -10,10 +10,10 @@
 # resident memory minus malloc'd memory (mallinfo2, `heap_kib`) stays at 81-85 MiB, but the
 # driver's own live allocations swing. At any one sample Mesa may still hold the textures of a
 # technique already deleted (one set of 2048^2 maps, ~48 MiB), and over several cycles it can hold
-# ~55 MiB more and then drop it (llvmpipe keeps compiled shader variants up to a limit). Measured
-# at 64x48, means over cycles 1-5 of three runs: 237 / 239 / 238 / 239 / 238, 240 / 237 / 235 /
-# 236 / 238 and 251 / 256 / 255 / 196 / 200 MiB; the least samples swung by up to 65 MiB and
-# the cycle ends by 85. Comparing the first sample with the last failed on CI (+75 MiB) with GL
+# ~55 MiB more and then drop it (which of its caches does so was not found; GL objects stay flat).
+# Measured at 64x48, means over cycles 1-5 of three runs: 237 / 239 / 238 / 239 / 238, 240 / 237 /
+# 235 / 236 / 238 and 251 / 256 / 255 / 196 / 200 MiB; the least samples swung by up to 65 MiB
+# and the cycle ends by 85. Comparing the first sample with the last failed on CI (+75 MiB) with GL
 # objects flat. The first cycle is left out: it runs at the scene's own map resolution.
 include(${CMAKE_CURRENT_LIST_DIR}/helpers.cmake)
 execute_process(COMMAND "${PENUMBRA}" techniques OUTPUT_VARIABLE list)

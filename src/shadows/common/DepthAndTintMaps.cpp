@@ -9,6 +9,33 @@ namespace penumbra::shadows {
 
 using scene::Light;
 
+namespace {
+
+gl::Texture mapTexture(GLenum format, int resolution, bool cube) {
+    return cube ? gl::Texture::createCube(format, resolution) : gl::Texture::create2D(format, resolution, resolution);
+}
+
+// Face `face` of a cube map, or the whole 2D map.
+void attachFace(gl::Framebuffer& fb, GLenum attachment, const gl::Texture& map, bool cube, int face) {
+    if (cube) fb.attachLayer(attachment, map, face);
+    else fb.attach(attachment, map);
+}
+
+// One depth-only framebuffer per face of `map`.
+std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, const std::string& label) {
+    std::vector<gl::Framebuffer> faces;
+    for (int f = 0; f < (cube ? 6 : 1); ++f) {
+        gl::Framebuffer fb;
+        attachFace(fb, GL_DEPTH_ATTACHMENT, map, cube, f);
+        fb.setNoColor();
+        fb.checkComplete(label);
+        faces.push_back(std::move(fb));
+    }
+    return faces;
+}
+
+}  // namespace
+
 DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
     tintProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
                                        .fragment = "src/shadows/common/glsl/transmit.frag"});
@@ -21,31 +48,24 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m = LightMaps{};
     m.resolution = res;
     m.cube = cube;
-    m.depth = cube ? gl::Texture::createCube(GL_DEPTH_COMPONENT32F, res) : gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
+    m.depth = mapTexture(GL_DEPTH_COMPONENT32F, res, cube);
     // Without tint a 1-texel white map keeps the lookups' "no tint" answer and costs nothing.
-    const int tintRes = withTint_ ? res : 1;
-    m.tint = cube ? gl::Texture::createCube(GL_RGBA16F, tintRes) : gl::Texture::create2D(GL_RGBA16F, tintRes, tintRes);
+    m.tint = mapTexture(GL_RGBA16F, withTint_ ? res : 1, cube);
     if (!withTint_) {
         const float white[4] = {1, 1, 1, 1};
         glClearTexImage(m.tint.id(), 0, GL_RGBA, GL_FLOAT, white);
     }
     m.depth.setDepthCompare(true);
     for (gl::Texture* t : {&m.depth, &m.tint}) t->setFilter(filter_, filter_);
+    m.depthFaces = depthOnlyFaces(m.depth, cube, "shadow depth map " + std::to_string(res));
     for (int f = 0; f < (cube ? 6 : 1); ++f) {
-        gl::Framebuffer depthOnly, withTint;
-        for (gl::Framebuffer* fb : {&depthOnly, &withTint}) {
-            if (cube) fb->attachLayer(GL_DEPTH_ATTACHMENT, m.depth, f);
-            else fb->attach(GL_DEPTH_ATTACHMENT, m.depth);
-        }
+        gl::Framebuffer withTint;
+        attachFace(withTint, GL_DEPTH_ATTACHMENT, m.depth, cube, f);
         if (withTint_) {
-            if (cube) withTint.attachLayer(GL_COLOR_ATTACHMENT0, m.tint, f);
-            else withTint.attach(GL_COLOR_ATTACHMENT0, m.tint);
+            attachFace(withTint, GL_COLOR_ATTACHMENT0, m.tint, cube, f);
             withTint.setDrawBuffers({GL_COLOR_ATTACHMENT0});
             withTint.checkComplete("shadow tint map " + std::to_string(res));
         }
-        depthOnly.setNoColor();
-        depthOnly.checkComplete("shadow depth map " + std::to_string(res));
-        m.depthFaces.push_back(std::move(depthOnly));
         m.tintFaces.push_back(std::move(withTint));
         // A new map's contents are undefined until cleared.
         m.tintDirty.push_back(withTint_ ? TexelRect(0, 0, res, res) : TexelRect(0));
@@ -58,16 +78,8 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
 
 void DepthAndTintMaps::ensureStill(LightMaps& m) {
     if (m.still.id() != 0) return;
-    m.still = m.cube ? gl::Texture::createCube(GL_DEPTH_COMPONENT32F, m.resolution)
-                     : gl::Texture::create2D(GL_DEPTH_COMPONENT32F, m.resolution, m.resolution);
-    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        gl::Framebuffer fb;
-        if (m.cube) fb.attachLayer(GL_DEPTH_ATTACHMENT, m.still, f);
-        else fb.attach(GL_DEPTH_ATTACHMENT, m.still);
-        fb.setNoColor();
-        fb.checkComplete("still casters' depth map " + std::to_string(m.resolution));
-        m.stillFaces.push_back(std::move(fb));
-    }
+    m.still = mapTexture(GL_DEPTH_COMPONENT32F, m.resolution, m.cube);
+    m.stillFaces = depthOnlyFaces(m.still, m.cube, "still casters' depth map " + std::to_string(m.resolution));
 }
 
 void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std::size_t face, int light,
