@@ -102,7 +102,6 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
         m.depthHolds[face] = stillKey;
         return;
     }
-    ensureStill(m);
     if (m.stillHolds[face] != stillKey) drawInto(m.stillFaces[face], Motion::Still);
     m.stillHolds[face] = stillKey;
     const GLenum target = m.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
@@ -126,17 +125,21 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
     const glm::vec4 white(1.0f);
+    const bool reuse = frame.reuseStillCasters && frame.casterDigest;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!slots_.shadowed(i)) continue;
         const Light& light = lights[i];
         const LightSpace& ls = spaces[i];
         ensure(i, ls.resolution, slots_.cube[i]);
+        // Allocated with the map whenever the scene animates anything, not when an animated caster
+        // first reaches the light: the maps a technique holds then do not depend on the time.
+        LightMaps& m = maps_[i];
+        if (reuse && frame.scene && frame.scene->animated()) ensureStill(m);
         gl::DebugGroup group(("shadow map: " + light.name).c_str());
         // Unbind every texture unit first. Measured on llvmpipe: with the previous frame's lookup
         // textures still bound, every shadow map after the first in a frame costs 7-10x more to
         // rasterise (2048^2, one thread: 145-190 ms instead of 15-20 ms), whatever its order.
         gl::unbindTextureUnits(gpu::kLightingUnits);
-        LightMaps& m = maps_[i];
         const glm::vec2 po = light.shadow.polygonOffset;
         // 1. opaque casters: depth only, with the light's polygon offset. 2. translucent casters
         // in front of the opaque depth: transmittance multiplied into rgb (dst * src), the nearest
@@ -145,7 +148,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
         gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
         tintPass.depthWrite = false;
         glViewport(0, 0, ls.resolution, ls.resolution);
-        const bool reuse = frame.reuseStillCasters && frame.casterDigest;
         for (int f = 0; f < ls.faceCount; ++f) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];

@@ -37,8 +37,8 @@ public:
         // translucent caster in view, already white, has neither a clear nor a pass.
         std::vector<TexelRect> tintDirty;
         // Per face, digests of what a map holds (0: unknown or something that moves): `depth`
-        // drawn from still casters only, `still` (allocated once an animated caster reaches the
-        // light), the tint.
+        // drawn from still casters only, `still` (allocated in scenes that animate anything),
+        // the tint.
         std::vector<std::uint64_t> depthHolds, stillHolds, tintHolds;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
