@@ -11,7 +11,8 @@ namespace penumbra::test {
 namespace {
 
 // A point light (cube map) and a sun (2D map) over a box, a still green pane and a sphere that
-// flies through both lights' views.
+// flies through both lights' views. A tall pole makes the scene's bounds (and so the sun's box)
+// hold the sphere's paths.
 scene::Scene stillAndMovingCasters() {
     return sceneFromJson(R"({
       "camera": { "position": [0, 7, 6], "target": [0, 0, 0], "fov_deg": 50 },
@@ -19,6 +20,7 @@ scene::Scene stillAndMovingCasters() {
                   { "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.6, "shadow": { "resolution": 256 } } ],
       "objects": [ { "shape": "plane", "size": [12, 12] },
                    { "name": "box", "shape": "box", "position": [-1.5, 0.5, 0] },
+                   { "name": "pole", "shape": "box", "size": [0.2, 4, 0.2], "position": [-5, 2, -5] },
                    { "name": "pane", "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, 0],
                      "material": { "transmission": [0.1, 0.9, 0.1] } },
                    { "name": "sphere", "shape": "sphere", "radius": 0.4,
@@ -30,9 +32,13 @@ struct Pair {
     render::OffscreenTarget target{64, 64};
     Pair(scene::Scene& s, const std::string& technique)
         : reusing(s, options(technique, true)), redrawing(s, options(technique, false)) {}
+    // `technique` may carry one parameter: "cssm2:xi=white".
     static render::RenderOptions options(const std::string& technique, bool reuse) {
         render::RenderOptions o;
-        o.technique = technique;
+        const std::size_t colon = technique.find(':'), equals = technique.find('=');
+        o.technique = technique.substr(0, colon);
+        if (colon != std::string::npos)
+            o.parameters.emplace_back(technique.substr(colon + 1, equals - colon - 1), technique.substr(equals + 1));
         o.reuseStillCasters = reuse;
         return o;
     }
@@ -66,43 +72,62 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
     expectSame(0.25f, "the point light moved");
     s.lights[1].direction = glm::normalize(glm::vec3(-0.2f, -1.0f, -0.5f));
     expectSame(0.5f, "the sun turned");
-    s.objects[2].position = {1.0f, 1.2f, 0.5f};  // the still pane
+    s.objects[3].position = {1.0f, 1.2f, 0.5f};  // the still pane
     expectSame(0.5f, "the pane moved");
-    s.objects[3].animation = {};  // nothing animated: whole maps and tints are kept
+    s.objects[4].animation = {};  // nothing animated: whole maps and tints are kept
     expectSame(0.5f, "nothing animated");
     expectSame(0.5f, "nothing animated, again");
-    s.objects[2].position = {1.5f, 1.4f, -0.5f};
+    s.objects[3].position = {1.5f, 1.4f, -0.5f};
     expectSame(0.5f, "the pane moved, nothing animated");
     s.objects[1].position = {-1.5f, 0.5f, 0.0f};
     expectSame(0.5f, "the box moved, nothing animated");
+    // The sphere flies between the sun and the pane: the pane's map must follow it over the pane,
+    // and be drawn again once it has left.
+    s.objects[3].position = {1.5f, 1.5f, 0.0f};
+    s.objects[4].animation.position = scene::Track({{0.0f, {-2.0f, 2.5f, 0.0f}}, {1.0f, {4.0f, 2.5f, 0.0f}}, {2.0f, {-2.0f, 2.5f, 0.0f}}});
+    for (float t : {0.0f, 0.1f, 0.1f, 0.3f, 0.5f, 0.6f, 0.8f, 0.9f, 0.9f})
+        expectSame(t, "the sphere crossing over the pane");
 }
 
-INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "cssm2", "vsm"));
+// cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept.
+INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "cssm2", "cssm2:xi=white", "vsm"));
 
 // Without an animated caster, the second frame of an unchanged view draws no triangle into any
-// shadow map; with the sphere in both lights' views only it is drawn into depth (and the pane
-// into the tint).
-TEST(ShadowReuse, UnchangedMapsDrawNothingAndAnimatedCastersAlone) {
+// shadow map; with the sphere in both lights' views only it is drawn into depth, and the pane's
+// tint (hard) or coloured stochastic map (cssm2) is redrawn only while the sphere's texels overlap
+// the pane's, since the pane is depth-tested against what the sphere writes.
+class KeptMapTriangles : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(KeptMapTriangles, UnchangedMapsDrawNothingAndAnimatedCastersAlone) {
     scene::Scene s = stillAndMovingCasters();
-    const std::size_t sphereTriangles = s.meshes[static_cast<std::size_t>(s.objects[3].mesh)].parts.at(0).indexCount / 3;
-    Pair pair(s, "hard");
-    pair.render(s, 0.5f);
+    scene::Object& sphere = s.objects[4];
+    const std::size_t sphereTriangles = s.meshes[static_cast<std::size_t>(sphere.mesh)].parts.at(0).indexCount / 3;
+    const std::size_t pane = 2;
+    Pair pair(s, GetParam());
+    pair.render(s, 0.0f);  // the sphere at (-3, 1, 1): in the sun's view, far from the pane
     const std::vector<std::size_t> first = pair.reusing.shadowTriangles();
     EXPECT_EQ(first, pair.redrawing.shadowTriangles()) << "the first frame draws everything either way";
-    pair.render(s, 0.5f);
+    pair.render(s, 0.0f);
     EXPECT_EQ(pair.redrawing.shadowTriangles(), first);
-    // The sphere at (0, 1, 1) lies in the sun's view and in some of the point light's cube faces.
     ASSERT_EQ(pair.reusing.shadowTriangles().size(), 2u);
     EXPECT_GE(pair.reusing.shadowTriangles()[0], sphereTriangles);
     EXPECT_LT(pair.reusing.shadowTriangles()[0], first[0]);
-    const std::size_t pane = 2;  // triangles: the tint is redrawn, since the sphere changes the depth it is tested against
-    EXPECT_EQ(pair.reusing.shadowTriangles()[1], sphereTriangles + pane) << "the sun draws the sphere and the pane's tint alone";
+    EXPECT_EQ(pair.reusing.shadowTriangles()[1], sphereTriangles) << "the sun draws the sphere alone; the pane's map is kept";
 
-    s.objects[3].animation = {};  // nothing moves now
-    pair.render(s, 0.5f);         // the maps are drawn once more without the sphere's motion
-    pair.render(s, 0.5f);
+    sphere.animation.position = scene::Track({{0.0f, {1.5f, 2.5f, 0.0f}}, {1.0f, {1.6f, 2.5f, 0.0f}}});  // above the pane, between it and the sun
+    for (int frame = 0; frame < 2; ++frame) {
+        pair.render(s, 0.0f);
+        EXPECT_EQ(pair.reusing.shadowTriangles()[1], sphereTriangles + pane)
+            << "frame " << frame << " with the sphere over the pane: the pane is drawn again";
+    }
+
+    sphere.animation = {};  // nothing moves now
+    pair.render(s, 0.0f);   // the maps are drawn once more without the sphere's motion
+    pair.render(s, 0.0f);
     EXPECT_EQ(pair.reusing.shadowTriangles(), (std::vector<std::size_t>{0, 0})) << "nothing changed: nothing drawn";
 }
+
+INSTANTIATE_TEST_SUITE_P(Techniques, KeptMapTriangles, ::testing::Values("hard", "cssm2"));
 
 }  // namespace
 }  // namespace penumbra::test

@@ -74,6 +74,7 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.depthHolds.assign(faces, 0);
     m.stillHolds.assign(faces, 0);
     m.tintHolds.assign(faces, 0);
+    m.translucentKeys.assign(faces, 0);
 }
 
 void DepthAndTintMaps::ensureStill(LightMaps& m) {
@@ -153,14 +154,23 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const glm::mat4& vp = ls.viewProj[face];
             const int light = static_cast<int>(i);
             const CasterSelection translucent{Casters::Translucent, vp, light};
-            const TexelRect tinted = withTint_ ? texelRect(frame.casterBounds(translucent), vp, ls.resolution) : TexelRect(0);
+            const TexelRect translucentTexels = texelRect(frame.casterBounds(translucent), vp, ls.resolution);
+            const TexelRect tinted = withTint_ ? translucentTexels : TexelRect(0);
             const bool anyTranslucent = !isEmpty(tinted);
-            const bool moving = reuse && !frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}).empty();
+            const scene::Bounds movingBounds =
+                reuse ? frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}) : scene::Bounds{};
+            const bool moving = !movingBounds.empty();
+            const TexelRect movingTexels = texelRect(movingBounds, vp, ls.resolution);
             const std::uint64_t stillKey =
                 reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp, po).value() : 0;
-            // The tint depends on the translucent casters and, through the depth test, the opaque depth.
+            // Translucent casters are depth-tested against the opaque depth: what they draw depends on
+            // it only where their texels are. An animated caster outside them leaves that depth the
+            // still casters'; one over them changes it (and its key 0 then never matches, so the
+            // frame after it has left redraws too).
+            const bool movingOverTranslucent = !isEmpty(intersection(movingTexels, translucentTexels));
             const std::uint64_t tintKey =
-                reuse && !moving ? util::Digest().add(stillKey, frame.casterDigest(translucent)).value() : 0;
+                reuse && !movingOverTranslucent ? util::Digest().add(stillKey, frame.casterDigest(translucent)).value() : 0;
+            m.translucentKeys[face] = tintKey;
             const bool tintCurrent = tintKey != 0 && tintKey == m.tintHolds[face];
             if (!tintCurrent) {
                 // White where the last translucent casters were (nothing without a tint map).

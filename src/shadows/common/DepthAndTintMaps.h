@@ -8,7 +8,9 @@
 // whose light, map and still casters (ShadowFrame::casterDigest) are as in the last frame keeps
 // its depth when no animated caster reaches it; when one does, the still casters' depth comes
 // from a copy kept in `still` and only the animated ones are drawn over it. The tint is redrawn
-// when the translucent casters or the opaque depth changed. Measured on llvmpipe, default scene
+// when the translucent casters changed or the opaque depth under them did: an animated caster
+// whose texels miss the translucent casters' leaves the tint as it was (`translucentKeys`, which
+// techniques with maps of their own over the same depth, CSSM's, key on too). Measured on llvmpipe, default scene
 // (one animated sphere): see the README's "Shadow maps of still casters".
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
@@ -40,6 +42,10 @@ public:
         // drawn from still casters only, `still` (allocated in scenes that animate anything),
         // the tint.
         std::vector<std::uint64_t> depthHolds, stillHolds, tintHolds;
+        // Per face, this frame's digest of what a pass of translucent casters depth-tested against
+        // this map would draw: the translucent casters, the still opaque depth and the light
+        // (0: unknown, or an animated caster's texels overlap the translucent casters').
+        std::vector<std::uint64_t> translucentKeys;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
     };

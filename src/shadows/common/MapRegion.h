@@ -17,6 +17,11 @@ using TexelRect = glm::ivec4;
 
 inline bool isEmpty(const TexelRect& r) { return r.x >= r.z || r.y >= r.w; }
 
+// The texels in both (empty if none).
+inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
+    return {glm::max(a.x, b.x), glm::max(a.y, b.y), glm::min(a.z, b.z), glm::min(a.w, b.w)};
+}
+
 // The texels of a square map of `resolution` that `bounds` can cover through `viewProj`, one
 // texel of margin around them: the whole map when a corner lies behind a perspective light's
 // eye, where its projection would flip.

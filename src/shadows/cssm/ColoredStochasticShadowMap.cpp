@@ -4,6 +4,7 @@
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
 #include "shadows/common/MapRegion.h"
+#include "util/Digest.h"
 
 #include <algorithm>
 #include <bit>
@@ -64,6 +65,7 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
         fb.checkComplete("coloured stochastic shadow map");
         m.targets.push_back(std::move(fb));
         m.dirty.emplace_back(0, 0, res, res);  // new storage holds anything
+        m.holds.push_back(0);
     }
     m.tileSide = side;
     if (side == 0) return;
@@ -103,6 +105,15 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     glDisable(GL_SCISSOR_TEST);
 }
 
+// Only the stratified ξ is the same every frame (white ξ is seeded by the frame index), and only
+// a map of translucent layers alone depends on the opaque depth just where those layers are (the
+// combined map copies all of it).
+std::uint64_t ColoredStochasticShadowMap::colourKey(std::size_t light, std::size_t face) const {
+    const std::uint64_t translucent = depth_.maps(light).translucentKeys[face];
+    if (translucent == 0 || xi_ != gpu::kXiStratified || !separateOpaque_) return 0;
+    return util::Digest().add(translucent, generator_, tileSide()).value();
+}
+
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     depth_.render(frame);  // 1. opaque casters' depth
     gl::DebugGroup group(name().c_str());
@@ -128,6 +139,9 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             p->set("uFar", ls.far);
         }
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
+            const std::uint64_t key = colourKey(i, f);
+            if (key != 0 && key == m.holds[f]) continue;  // the colour map and its tiles are as drawn
+            m.holds[f] = key;
             const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i)};
             const scene::Bounds casters = frame.casterBounds(translucent);
             glViewport(0, 0, m.resolution, m.resolution);

@@ -56,6 +56,10 @@ private:
         // Per face: the texels (x0, y0, x1, y1) that may hold something other than white, so that
         // the next frame clears only those (a 2048² RGBA32F clear is 64 MiB of writes).
         std::vector<TexelRect> dirty;
+        // Per face: the digest of what the colour map and its tiles hold (0: nothing kept), so
+        // that a face whose translucent casters, opaque depth under them and ξ are as in the last
+        // frame is not redrawn (DepthAndTintMaps::LightMaps::translucentKeys).
+        std::vector<std::uint64_t> holds;
         int tileSide = 0;                       // with coverage: tiles.frag's statistics
         gl::Texture tiles;                      // RGBA32F (2D or cube), one texel per side x side tile
         std::vector<gl::Texture> colourFaces;   // 2D views of the colour map's faces (tiles input)
@@ -65,6 +69,8 @@ private:
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
     int tileSide() const;
     void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect);
+    // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).
+    std::uint64_t colourKey(std::size_t light, std::size_t face) const;
 
     Variant variant_;
     int filter_ = gpu::kCssmBox64, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
