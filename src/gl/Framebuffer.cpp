@@ -45,10 +45,10 @@ Framebuffer Framebuffer::colourAndDepth(const Texture& colour, const Texture& de
     return f;
 }
 
-Framebuffer Framebuffer::colourOnly(const Texture& colour, int layer, const std::string& what) {
+Framebuffer Framebuffer::colourOnly(const Texture& colour, int layer, const std::string& what, int level) {
     Framebuffer f;
-    if (layer >= 0) f.attachLayer(GL_COLOR_ATTACHMENT0, colour, layer);
-    else f.attach(GL_COLOR_ATTACHMENT0, colour);
+    if (layer >= 0) f.attachLayer(GL_COLOR_ATTACHMENT0, colour, layer, level);
+    else f.attach(GL_COLOR_ATTACHMENT0, colour, level);
     f.setDrawBuffers({GL_COLOR_ATTACHMENT0});
     f.checkComplete(what);
     return f;

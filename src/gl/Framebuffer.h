@@ -14,8 +14,8 @@ public:
     // One colour texture (draw buffer 0) and one depth texture, checked complete (`what` names it).
     static Framebuffer colourAndDepth(const Texture& colour, const Texture& depth, const std::string& what);
     // One colour texture as draw buffer 0, checked complete: a whole 2D texture (`layer` < 0) or
-    // one layer / cube face of it.
-    static Framebuffer colourOnly(const Texture& colour, int layer, const std::string& what);
+    // one layer / cube face of it, at mip level `level`.
+    static Framebuffer colourOnly(const Texture& colour, int layer, const std::string& what, int level = 0);
     void attach(GLenum attachment, const Texture& texture, int level = 0);
     void attachLayer(GLenum attachment, const Texture& texture, int layer, int level = 0);
     void setDrawBuffers(std::initializer_list<GLenum> buffers);

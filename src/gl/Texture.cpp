@@ -1,5 +1,6 @@
 #include "gl/Texture.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -74,11 +75,12 @@ Texture Texture::create2DMultisample(GLenum fmt, int w, int h, int samples) {
 
 void unbindTextureUnits(GLsizei units) { glBindTextures(0, units, nullptr); }
 
-Texture Texture::view2D(const Texture& source, GLenum format, int layer) {
+Texture Texture::view2D(const Texture& source, GLenum format, int layer, int level) {
     GLuint id = 0;
     glGenTextures(1, &id);  // glTextureView needs a name that was never bound: glGen, not glCreate
-    glTextureView(id, GL_TEXTURE_2D, source.id(), format, 0, 1, static_cast<GLuint>(layer), 1);
-    return Texture(GL_TEXTURE_2D, id, source.width(), source.height(), 0);
+    glTextureView(id, GL_TEXTURE_2D, source.id(), format, static_cast<GLuint>(level), 1, static_cast<GLuint>(layer), 1);
+    const int width = std::max(1, source.width() >> level), height = std::max(1, source.height() >> level);
+    return Texture(GL_TEXTURE_2D, id, width, height, 0);
 }
 
 Texture Texture::adopt(GLenum target, GLuint id, int w, int h, std::size_t bytes) { return Texture(target, id, w, h, bytes); }

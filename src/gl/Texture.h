@@ -14,8 +14,10 @@ public:
     static Texture create2DArray(GLenum internalFormat, int width, int height, int layers, int levels = 1);
     static Texture createCube(GLenum internalFormat, int size);
     static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
-    // A 2D view of one layer (cube face) of `source`, for passes that read or write one face.
-    static Texture view2D(const Texture& source, GLenum format, int layer);
+    // A 2D view of one layer (cube face) and one mip level of `source`, for passes that read or
+    // write one face, or read one level while writing the next (no feedback loop: the view holds
+    // only the level it reads).
+    static Texture view2D(const Texture& source, GLenum format, int layer, int level = 0);
     // Takes ownership of a texture made elsewhere (3D textures, views).
     static Texture adopt(GLenum target, GLuint id, int width, int height, std::size_t bytes);
 

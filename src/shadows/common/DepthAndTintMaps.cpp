@@ -75,6 +75,8 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.stillHolds.assign(faces, 0);
     m.tintHolds.assign(faces, 0);
     m.translucentKeys.assign(faces, 0);
+    m.stillKeys.assign(faces, 0);
+    m.movingTexels.assign(faces, TexelRect(0));
 }
 
 void DepthAndTintMaps::ensureStill(LightMaps& m) {
@@ -171,6 +173,8 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const std::uint64_t tintKey =
                 reuse && !movingOverTranslucent ? util::Digest().add(stillKey, frame.casterDigest(translucent)).value() : 0;
             m.translucentKeys[face] = tintKey;
+            m.stillKeys[face] = stillKey;
+            m.movingTexels[face] = movingTexels;
             const bool tintCurrent = tintKey != 0 && tintKey == m.tintHolds[face];
             if (!tintCurrent) {
                 // White where the last translucent casters were (nothing without a tint map).

@@ -46,6 +46,11 @@ public:
         // this map would draw: the translucent casters, the still opaque depth and the light
         // (0: unknown, or an animated caster's texels overlap the translucent casters').
         std::vector<std::uint64_t> translucentKeys;
+        // Per face, this frame: the digest of the still opaque casters (0: maps are not kept) and
+        // the texels the animated ones can cover, so that passes over the depth (moments) redo
+        // only what changed.
+        std::vector<std::uint64_t> stillKeys;
+        std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
     };

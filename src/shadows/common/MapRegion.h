@@ -17,6 +17,26 @@ using TexelRect = glm::ivec4;
 
 inline bool isEmpty(const TexelRect& r) { return r.x >= r.z || r.y >= r.w; }
 
+// The smallest rectangle holding both (either may be empty).
+inline TexelRect unite(const TexelRect& a, const TexelRect& b) {
+    if (isEmpty(a)) return b;
+    if (isEmpty(b)) return a;
+    return {glm::min(a.x, b.x), glm::min(a.y, b.y), glm::max(a.z, b.z), glm::max(a.w, b.w)};
+}
+
+// `r` widened by `by` texels on each side (x and y apart), clamped to a square map of `size`.
+inline TexelRect grown(const TexelRect& r, glm::ivec2 by, int size) {
+    if (isEmpty(r)) return r;
+    return glm::clamp(TexelRect(r.x - by.x, r.y - by.y, r.z + by.x, r.w + by.y), 0, size);
+}
+
+// The texels of a map `factor` times coarser that hold any of `r`'s (mip levels, downsampled maps).
+inline TexelRect coarser(const TexelRect& r, int factor, int coarseSize) {
+    if (isEmpty(r)) return r;
+    return glm::clamp(TexelRect(r.x / factor, r.y / factor, (r.z + factor - 1) / factor, (r.w + factor - 1) / factor), 0,
+                      coarseSize);
+}
+
 // The texels in both (empty if none).
 inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
     return {glm::max(a.x, b.x), glm::max(a.y, b.y), glm::min(a.z, b.z), glm::min(a.w, b.w)};

@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
+#include "util/Digest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +35,8 @@ void MomentShadowMap::buildPrograms() {
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     blur_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/blur.frag", .defines = defines});
+    downsample_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/downsample.frag"});
+    blurTaps_ = taps;
     built_ = {blurRadius_, halfResolution_};
 }
 
@@ -101,6 +104,8 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     }
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
+    m.raw = gl::Texture::create2D(m.format, res, res);
+    m.rawTarget = gl::Framebuffer::colourOnly(m.raw, -1, "unblurred moments");
     m.scratch = gl::Texture::create2D(m.format, res, res);
     m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
     if (msaa) {  // llvmpipe offers at most 4 samples
@@ -109,63 +114,106 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
         m.multisampledTarget.setNoColor();
         m.multisampledTarget.checkComplete("multisampled moment depth");
     }
-    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
+    const int faces = m.cube ? 6 : 1;
+    m.levelTargets.resize(static_cast<std::size_t>(faces));
+    m.levelViews.resize(static_cast<std::size_t>(faces));
+    for (int f = 0; f < faces; ++f) {
         m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
-        m.momentFaces.push_back(gl::Texture::view2D(m.moments, m.format, f));
-        m.momentTargets.push_back(gl::Framebuffer::colourOnly(m.moments, m.cube ? f : -1, "moment map"));
+        for (int level = 0; level < levels; ++level) {
+            const auto face = static_cast<std::size_t>(f);
+            m.levelTargets[face].push_back(gl::Framebuffer::colourOnly(m.moments, m.cube ? f : -1, "moment map", level));
+            m.levelViews[face].push_back(gl::Texture::view2D(m.moments, m.format, f, level));
+        }
     }
+    m.holds.assign(static_cast<std::size_t>(faces), 0);
+    m.movingTexels.assign(static_cast<std::size_t>(faces), TexelRect(0));
 }
 
-void MomentShadowMap::convert(std::size_t i, const ShadowFrame& frame) {
+TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const ShadowFrame& frame) {
+    LightMoments& m = moments_[i];
+    const DepthAndTintMaps::LightMaps& depth = maps_.maps(i);
+    const LightSpace& space = (*frame.lightSpaces)[i];
+    const TexelRect whole(0, 0, m.depthResolution, m.depthResolution);
+    // MSAA draws its own depth every frame; the rest is what the moments are a function of.
+    const std::uint64_t still = depth.stillKeys[face];
+    const std::uint64_t key = still == 0 || m.multisampledDepth.id() != 0
+                                  ? 0
+                                  : util::Digest()
+                                        .add(still, positiveExponent_, negativeExponent_, space.near, space.far,
+                                             space.perspective, blurRadius_)
+                                        .value();
+    const TexelRect moving = depth.movingTexels[face];
+    const TexelRect changed = key != 0 && key == m.holds[face] ? unite(m.movingTexels[face], moving) : whole;
+    m.holds[face] = key;
+    m.movingTexels[face] = moving;
+    return changed;
+}
+
+void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& depthTexels, const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
     const LightSpace& space = (*frame.lightSpaces)[i];
     const scene::Light& light = (*frame.lights)[i];
-    const int res = m.resolution;
-    const gl::PassState fullscreen = gl::PassState::fullscreen();
-    const gl::PassState msaaDepth = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
+    const bool msaa = m.multisampledDepth.id() != 0;
+    if (msaa) {  // the opaque casters again, into the 4x multisampled depth map of this face
+        const gl::ScopedPassState state(
+            gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y));
+        glViewport(0, 0, m.depthResolution, m.depthResolution);
+        m.multisampledTarget.bind();
+        const float farDepth = 1.0f;
+        glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
+        maps_.depthProgram().set("uLightViewProj", space.viewProj[face]);
+        frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i)});
+        fullscreenVao_.bind();
+        m.multisampledDepth.bind(1);
+    }
+    // Moment texels whose unblurred moments changed; the blur spreads that by its taps in x, then
+    // y: the y pass reads the x-blurred texels as far again above and below, the x pass the
+    // unblurred ones as far again left and right.
+    const TexelRect changed = coarser(depthTexels, m.depthResolution / m.resolution, m.resolution);
+    const TexelRect blurred = grown(changed, glm::ivec2(blurTaps_), m.resolution);
+    const TexelRect xBlurred = grown(blurred, glm::ivec2(0, blurTaps_), m.resolution);
+    const TexelRect unblurred = grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
+    const auto scissor = [](const TexelRect& r) { glScissor(r.x, r.y, r.z - r.x, r.w - r.y); };
+    const gl::ScopedPassState state(gl::PassState::fullscreen());
+    glEnable(GL_SCISSOR_TEST);
+    glViewport(0, 0, m.resolution, m.resolution);
     toMoments_.set("uPerspective", space.perspective ? 1 : 0);
     toMoments_.set("uNear", space.near);
     toMoments_.set("uFar", space.far);
     toMoments_.set("uExponents", glm::vec2(positiveExponent_, negativeExponent_));
-    const int radius = blurRadius_;
-    const bool msaa = m.multisampledDepth.id() != 0;
     toMoments_.set("uSamples", msaa ? 4 : 0);
-    for (std::size_t f = 0; f < m.momentTargets.size(); ++f) {
-        if (msaa) {  // the opaque casters again, into the 4x multisampled depth map of this face
-            const gl::ScopedPassState state(msaaDepth);
-            glViewport(0, 0, m.depthResolution, m.depthResolution);
-            m.multisampledTarget.bind();
-            const float farDepth = 1.0f;
-            glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
-            maps_.depthProgram().set("uLightViewProj", space.viewProj[f]);
-            frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[f], static_cast<int>(i)});
-            fullscreenVao_.bind();
-            m.multisampledDepth.bind(1);
-        }
-        const gl::ScopedPassState state(fullscreen);
-        glViewport(0, 0, res, res);
-        m.momentTargets[f].bind();
-        toMoments_.use();
-        depthSampler_.bind(0);
-        m.depthFaces[f].bind(0);
+    toMoments_.use();
+    depthSampler_.bind(0);
+    m.depthFaces[face].bind(0);
+    (blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0]).bind();
+    scissor(blurTaps_ > 0 ? unblurred : blurred);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl::Sampler::unbind(0);
+    if (blurTaps_ > 0) {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
+        blur_.use();
+        m.scratchTarget.bind();
+        blur_.set("uDirection", glm::ivec2(1, 0));
+        m.raw.bind(0);
+        scissor(xBlurred);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        gl::Sampler::unbind(0);
-        if (radius > 0) {  // separable Gaussian: map -> scratch (x), scratch -> map (y)
-            blur_.use();
-            m.scratchTarget.bind();
-            blur_.set("uDirection", glm::ivec2(1, 0));
-            m.momentFaces[f].bind(0);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            m.momentTargets[f].bind();
-            blur_.set("uDirection", glm::ivec2(0, 1));
-            m.scratch.bind(0);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
+        m.levelTargets[face][0].bind();
+        blur_.set("uDirection", glm::ivec2(0, 1));
+        m.scratch.bind(0);
+        scissor(blurred);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    if (m.levels > 1) {
-        glGenerateTextureMipmap(m.moments.id());
-        glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, static_cast<float>(anisotropy_));
+    TexelRect level = blurred;
+    downsample_.use();
+    for (int l = 1; l < m.levels; ++l) {
+        const int size = std::max(1, m.resolution >> l);
+        level = coarser(level, 2, size);
+        glViewport(0, 0, size, size);
+        m.levelTargets[face][static_cast<std::size_t>(l)].bind();
+        m.levelViews[face][static_cast<std::size_t>(l - 1)].bind(0);
+        scissor(level);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
@@ -176,7 +224,12 @@ void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
     for (std::size_t i = 0; i < maps_.slots().size(); ++i) {
         if (!maps_.slots().shadowed(i)) continue;
         ensure(i, maps_.maps(i));
-        convert(i, frame);
+        LightMoments& m = moments_[i];
+        for (std::size_t f = 0; f < m.levelTargets.size(); ++f) {
+            const TexelRect changed = changedTexels(i, f, frame);
+            if (!isEmpty(changed)) update(i, f, changed, frame);
+        }
+        if (m.levels > 1) glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, static_cast<float>(anisotropy_));
     }
 }
 
@@ -195,7 +248,7 @@ void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
 std::size_t MomentShadowMap::memoryBytes() const {
     std::size_t total = maps_.memoryBytes();
     for (const auto& m : moments_)
-        total += m.moments.memoryBytes() + m.scratch.memoryBytes() + m.multisampledDepth.memoryBytes();
+        total += m.moments.memoryBytes() + m.raw.memoryBytes() + m.scratch.memoryBytes() + m.multisampledDepth.memoryBytes();
     return total;
 }
 

@@ -5,14 +5,16 @@
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/DepthAndTintMaps.h"
+#include "shadows/common/MapRegion.h"
 #include "shadows/moments/MomentWarp.h"
 
 namespace penumbra::shadows {
 
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. Moments are made
-// from the (opaque-caster) depth map by a full-screen pass, then blurred with a separable
-// Gaussian and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
-// translucent casters comes from the shared tint map.
+// from the (opaque-caster) depth map, blurred with a separable Gaussian and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
+// translucent casters comes from the shared tint map. Where the depth map was kept
+// (DepthAndTintMaps), only the rectangle the animated casters cover now or covered last frame is
+// converted, blurred and mip-mapped again, widened by the blur's reach.
 class MomentShadowMap final : public ShadowTechnique {
 public:
     enum class Warp {
@@ -40,16 +42,27 @@ private:
         bool cube = false;
         GLenum format = 0;
         int levels = 1;
-        gl::Texture moments, scratch;                  // scratch: 2D, one blur direction
-        std::vector<gl::Texture> depthFaces, momentFaces;  // 2D views of each face (cube) or of the map
-        std::vector<gl::Framebuffer> momentTargets;    // one per face
-        gl::Framebuffer scratchTarget;
+        gl::Texture moments;
+        gl::Texture raw, scratch;  // 2D: the unblurred moments of one face, and those blurred along x
+        std::vector<gl::Texture> depthFaces;           // 2D views of each face (cube) or of the map
+        // Per face, per mip level: a render target, and a view of the level alone (mip input).
+        std::vector<std::vector<gl::Framebuffer>> levelTargets;
+        std::vector<std::vector<gl::Texture>> levelViews;
+        // Per face: the digest of the still depth and settings the moments were made from (0:
+        // none), and the depth texels the animated casters covered then.
+        std::vector<std::uint64_t> holds;
+        std::vector<TexelRect> movingTexels;
+        gl::Framebuffer rawTarget, scratchTarget;
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;
     };
     GLenum format() const;
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
-    void convert(std::size_t light, const ShadowFrame& frame);
+    // The depth texels of face `face` whose moments must be made again this frame (all of them
+    // when nothing was kept).
+    TexelRect changedTexels(std::size_t light, std::size_t face, const ShadowFrame& frame);
+    // Makes the moments (and their mip levels) of `depthTexels` of face `face` again.
+    void update(std::size_t light, std::size_t face, const TexelRect& depthTexels, const ShadowFrame& frame);
     void buildPrograms();
 
     std::string name_;
@@ -62,7 +75,8 @@ private:
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
-    gl::Program toMoments_, blur_;
+    gl::Program toMoments_, blur_, downsample_;
+    int blurTaps_ = 0;  // taps each side, in moment texels (the programs' BLUR_RADIUS)
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
 };

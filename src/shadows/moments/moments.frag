@@ -1,5 +1,8 @@
 #version 450 core
-// Depth map -> moments of (warped) linear depth, one texel each (blurred afterwards, blur.frag).
+// Depth map -> moments of (warped) linear depth, one texel each, into a scratch map that
+// blur.frag blurs into the moment map (x, then y), so that a pass may redo just a rectangle of
+// the moment map where the depth changed (MomentShadowMap::update) without leaving unblurred
+// moments around it.
 // The warps are those of MomentWarp.h; x = linear depth remapped to [-1, 1], t = linear depth
 // in [0, 1]. MOMENT_WARP and MOMENT_DOWNSAMPLE are compile-time constants
 // (MomentShadowMap::buildPrograms): llvmpipe runs every side of a uniform branch.
