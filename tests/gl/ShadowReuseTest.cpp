@@ -110,6 +110,9 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
     s.objects[4].animation = {};  // nothing animated: whole maps and tints are kept
     expectSame(0.5f, "nothing animated");
     expectSame(0.5f, "nothing animated, again");
+    s.camera.position = {1.0f, 6.0f, 7.0f};  // cascades and warped maps follow the camera
+    expectSame(0.5f, "the camera moved, nothing animated");
+    expectSame(0.5f, "the camera stands still again");
     s.objects[3].position = {1.5f, 1.4f, -0.5f};
     expectSame(0.5f, "the pane moved, nothing animated");
     s.objects[1].position = {-1.5f, 0.5f, 0.0f};
@@ -124,7 +127,8 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
 
 // cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept. A wide
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
-INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16"));
+INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16",
+                                                                  "cascaded", "lispsm"));
 
 // Without an animated caster, the second frame of an unchanged view draws no triangle into any
 // shadow map; with the sphere in both lights' views only it is drawn into depth, and the pane's

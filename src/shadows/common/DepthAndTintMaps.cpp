@@ -129,6 +129,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     slots_ = *frame.slots;
     const glm::vec4 white(1.0f);
     const bool reuse = frame.reuseStillCasters && frame.casterDigest;
+    depthElsewhere_ = depthElsewhere;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!slots_.shadowed(i)) continue;
         const Light& light = lights[i];
@@ -223,7 +224,10 @@ std::vector<DebugView> DepthAndTintMaps::debugViews() const {
     std::vector<DebugView> views;
     for (std::size_t i = 0; i < maps_.size(); ++i) {
         if (maps_[i].depth.id() == 0 || maps_[i].cube) continue;
-        views.push_back({"light " + std::to_string(i) + " depth", maps_[i].depth.id(), GL_TEXTURE_2D, true, 0});
+        // A light whose depth lives in the technique's own map: this one is drawn only under
+        // translucent casters, as the tint's depth test, and may be stale elsewhere.
+        if (static_cast<int>(i) != depthElsewhere_)
+            views.push_back({"light " + std::to_string(i) + " depth", maps_[i].depth.id(), GL_TEXTURE_2D, true, 0});
         views.push_back({"light " + std::to_string(i) + " colour", maps_[i].tint.id(), GL_TEXTURE_2D, false, 0});
     }
     return views;

@@ -88,6 +88,7 @@ private:
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;
+    int depthElsewhere_ = -1;  // of the last render
 };
 
 }  // namespace penumbra::shadows

@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
+#include "util/Digest.h"
 
 #include <algorithm>
 
@@ -26,19 +27,27 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         }
         resolution_ = res;
         layers_ = count;
+        holds_.assign(static_cast<std::size_t>(count), 0);
     }
     gl::unbindTextureUnits(gpu::kLightingUnits);  // see DepthAndTintMaps::render
     gl::PassState pass = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
     pass.clipDistance0 = !clipPlanes.empty();
     const gl::ScopedPassState state(pass);
+    const bool reuse = frame.reuseStillCasters && frame.casterDigest;
     for (int layer = 0; layer < count; ++layer) {
         const auto l = static_cast<std::size_t>(layer);
-        layerTargets_[l].beginDepthPass(res, res);
-        casters_.set("uLightViewProj", viewProj[l]);
-        casters_.set("uClipPlane", l < clipPlanes.size() ? clipPlanes[l] : glm::vec4(0, 0, 0, 1));
+        const glm::vec4 clipPlane = l < clipPlanes.size() ? clipPlanes[l] : glm::vec4(0, 0, 0, 1);
         // A caster outside the layer's clip volume would be clipped whole (no depth clamp here):
         // culling it per object leaves the map unchanged.
-        frame.drawCasters(casters_, {Casters::Opaque, viewProj[l], frame.slots->sun});
+        const CasterSelection casters{Casters::Opaque, viewProj[l], frame.slots->sun};
+        const std::uint64_t key =
+            reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset).value() : 0;
+        if (key != 0 && key == holds_[l]) continue;
+        holds_[l] = key;
+        layerTargets_[l].beginDepthPass(res, res);
+        casters_.set("uLightViewProj", viewProj[l]);
+        casters_.set("uClipPlane", clipPlane);
+        frame.drawCasters(casters_, casters);
     }
 }
 

@@ -4,6 +4,9 @@
 // reach it (culled per object against that layer's volume). Measured on llvmpipe, 975k triangles,
 // 2048^2: a single pass instancing each triangle into every layer through a geometry shader
 // (invocations = 16) cost lispsm 1845 ms and cascaded 2006 ms against hard's 112 ms (issue 15).
+// A layer whose volume, clip plane and casters (ShadowFrame::casterDigest, animated ones with
+// their current placement) are as in the last frame is kept (ShadowFrame::reuseStillCasters):
+// the layers follow the camera, so they are kept while it and what they see stand still.
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
@@ -33,6 +36,7 @@ private:
     gl::Texture texture_;
     gl::Texture view_;  // layer 0 as a plain 2D texture for the debug overlay
     std::vector<gl::Framebuffer> layerTargets_;  // one depth-only framebuffer per layer
+    std::vector<std::uint64_t> holds_;           // per layer: the digest of what it holds (0: unknown)
     int resolution_ = 0, layers_ = 0;
     DepthCasterProgram casters_;
 };
