@@ -20,9 +20,11 @@
 #include <csignal>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <poll.h>
 #include <sstream>
 #include <sys/prctl.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -234,52 +236,154 @@ std::string assimpName() {
 }
 
 // Assimp (Debian's 5.2) crashes on some malformed OBJ files and loops forever on some PLY
-// headers; tests/fuzz found both. Its reader therefore runs first in a child process: if the
-// child dies or overruns the time limit, the file is refused with a message, and penumbra goes
-// on. Only when the child read the file cleanly does this process read it (Assimp is
+// headers; tests/fuzz found both. Its reader therefore runs first in a helper process: if the
+// helper dies or overruns the time limit, the file is refused with a message, and penumbra goes
+// on. Only when the helper read the file cleanly does this process read it (Assimp is
 // deterministic), so the importer costs one extra parse and nothing can take the program down.
-void probeInChildProcess(const fs::path& file) {
-    int pipeFds[2];
-    if (::pipe(pipeFds) != 0) return;  // no isolation available: read in-process as before
-    const pid_t child = ::fork();
-    if (child < 0) {
-        ::close(pipeFds[0]);
-        ::close(pipeFds[1]);
-        return;
+//
+// The helper is forked once and reads file after file; it is forked again only after it died or
+// was stopped. A fork per file cost 40-140 ms (copying the page tables of a large process, and
+// Assimp's buffers copied on write): the model fuzz targets ran at 7-30 files/s.
+class ImportProbe {
+public:
+    ~ImportProbe() { stop(); }
+
+    // Throws InputError when the helper crashed on `file` or overran the limit; returns when it
+    // read the file (or when no helper can be had: then the file is read in-process, as before).
+    void check(const fs::path& file) {
+        const std::lock_guard lock(mutex_);
+        const std::string path = file.string();
+        // A helper that died between files (killed from outside, or with the thread that forked
+        // it: PR_SET_PDEATHSIG follows threads) is replaced before the file is blamed.
+        if (!ask(path)) {
+            stop();
+            if (!ask(path)) return;
+        }
+        using Clock = std::chrono::steady_clock;
+        const auto deadline = Clock::now() + std::chrono::seconds(importTimeoutSeconds);
+        char done = 0;
+        int ready = -1;
+        while (true) {  // signals (a profiler's or a fuzzer's timer) interrupt poll, which then resumes
+            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+            pollfd pfd{socket_, POLLIN, 0};
+            ready = left > 0 ? ::poll(&pfd, 1, static_cast<int>(left)) : 0;
+            if (ready >= 0 || errno != EINTR) break;
+        }
+        if (ready > 0 && ::recv(socket_, &done, 1, 0) == 1) return;  // read cleanly
+        const bool overran = ready <= 0;
+        const int status = stop();
+        if (overran)
+            throw InputError(file, "cannot read model: " + assimpName() + " did not finish within " +
+                                       std::to_string(importTimeoutSeconds) + " s; the file is malformed or too large");
+        throw InputError(file, "cannot read model: " + assimpName() + " crashed on this file (signal " +
+                                   std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0) + "); the file is malformed");
     }
-    if (child == 0) {
-        // Default actions for crash signals, so a crash ends only this child quietly (a fuzzer's
-        // or sanitizer's handler would otherwise report the child's crash as the parent's).
+
+private:
+    // Sends the path to the helper, starting one if there is none; false if it could not be sent.
+    bool ask(const std::string& path) {
+        if (owner_ != ::getpid()) forget();  // a forked copy of this process has no helper of its own
+        if (child_ < 0 && !start()) return false;
+        const auto size = static_cast<std::uint32_t>(path.size());
+        return sendAll(&size, sizeof size) && sendAll(path.data(), path.size());
+    }
+
+    bool sendAll(const void* data, std::size_t size) {
+        const char* at = static_cast<const char*>(data);
+        while (size > 0) {
+            const ssize_t n = ::send(socket_, at, size, MSG_NOSIGNAL);  // a dead helper: EPIPE, not SIGPIPE
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return false;
+            at += n;
+            size -= static_cast<std::size_t>(n);
+        }
+        return true;
+    }
+
+    bool start() {
+        int fds[2];
+        if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) return false;
+        const pid_t child = ::fork();
+        if (child < 0) {
+            ::close(fds[0]);
+            ::close(fds[1]);
+            return false;
+        }
+        if (child == 0) {
+            ::close(fds[0]);
+            serve(fds[1]);
+        }
+        ::close(fds[1]);
+        child_ = child;
+        socket_ = fds[0];
+        owner_ = ::getpid();
+        return true;
+    }
+
+    // The helper: reads each path it is sent and answers one byte, until its socket closes.
+    [[noreturn]] static void serve(int socket) {
+        // Default actions for crash signals, so a crash ends only the helper quietly (a fuzzer's
+        // or sanitizer's handler would otherwise report the helper's crash as the parent's).
         for (int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT}) ::signal(sig, SIG_DFL);
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the program that asked
         if (::getppid() == 1) ::_exit(0);
-        ::close(pipeFds[0]);
-        Assimp::Importer importer;
-        readWithAssimp(importer, file);
-        ::_exit(0);  // the pipe's write end closes here, which wakes the parent's poll
+        std::string path;
+        while (true) {
+            std::uint32_t size = 0;
+            if (!receiveAll(socket, &size, sizeof size)) ::_exit(0);
+            path.resize(size);
+            if (!receiveAll(socket, path.data(), size)) ::_exit(0);
+            {
+                Assimp::Importer importer;
+                readWithAssimp(importer, path);
+            }
+            const char done = 1;
+            if (::send(socket, &done, 1, MSG_NOSIGNAL) != 1) ::_exit(0);
+        }
     }
-    ::close(pipeFds[1]);
-    // Wait for the pipe to close (the child exited or died) or the time limit, whichever comes
-    // first; signals (a profiler's or a fuzzer's timer) interrupt poll, which then resumes.
-    using Clock = std::chrono::steady_clock;
-    const auto deadline = Clock::now() + std::chrono::seconds(importTimeoutSeconds);
-    int ready = -1;
-    while (true) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-        pollfd pfd{pipeFds[0], POLLIN, 0};
-        ready = left > 0 ? ::poll(&pfd, 1, static_cast<int>(left)) : 0;
-        if (ready >= 0 || errno != EINTR) break;
+
+    static bool receiveAll(int socket, void* data, std::size_t size) {
+        char* at = static_cast<char*>(data);
+        while (size > 0) {
+            const ssize_t n = ::recv(socket, at, size, 0);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return false;
+            at += n;
+            size -= static_cast<std::size_t>(n);
+        }
+        return true;
     }
-    ::close(pipeFds[0]);
-    if (ready <= 0) ::kill(child, SIGKILL);
-    int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {}
-    if (ready <= 0)
-        throw InputError(file, "cannot read model: " + assimpName() + " did not finish within " +
-                                   std::to_string(importTimeoutSeconds) + " s; the file is malformed or too large");
-    if (WIFSIGNALED(status))
-        throw InputError(file, "cannot read model: " + assimpName() + " crashed on this file (signal " +
-                                   std::to_string(WTERMSIG(status)) + "); the file is malformed");
+
+    // Stops the helper (if any) and returns its wait status.
+    int stop() {
+        if (child_ < 0 || owner_ != ::getpid()) {
+            forget();
+            return 0;
+        }
+        ::close(socket_);  // a waiting helper exits; a busy or stuck one is killed
+        ::kill(child_, SIGKILL);
+        int status = 0;
+        while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {}
+        child_ = -1;
+        socket_ = -1;
+        return status;
+    }
+
+    void forget() {
+        if (socket_ >= 0) ::close(socket_);
+        child_ = -1;
+        socket_ = -1;
+        owner_ = ::getpid();
+    }
+
+    std::mutex mutex_;
+    pid_t child_ = -1, owner_ = -1;
+    int socket_ = -1;
+};
+
+void probeInHelperProcess(const fs::path& file) {
+    static ImportProbe probe;
+    probe.check(file);
 }
 
 // Assimp's PLY reader loops forever on a PLY cut short (a broken download, say): a header without
@@ -338,7 +442,7 @@ int importModel(const fs::path& file, Scene& scene) {
     // A folder or a device (/dev/zero, a FIFO) would make the importer fail or read forever.
     if (!fs::is_regular_file(file, ec)) throw InputError(file, "model path is not a regular file");
     checkPlyIsWhole(file);
-    probeInChildProcess(file);
+    probeInHelperProcess(file);
     Assimp::Importer importer;
     const aiScene* ai = readWithAssimp(importer, file);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {
