@@ -10,8 +10,9 @@
 // from a copy kept in `still` and only the animated ones are drawn over it. The tint is redrawn
 // when the translucent casters changed or the opaque depth under them did: an animated caster
 // whose texels miss the translucent casters' leaves the tint as it was (`translucentKeys`, which
-// techniques with maps of their own over the same depth, CSSM's, key on too). Measured on llvmpipe, default scene
-// (one animated sphere): see the README's "Shadow maps of still casters".
+// techniques with maps of their own over the same depth, CSSM's, key on too). Moments redo only
+// the animated casters' texels (`stillKeys`, `movingTexels`). Measured on llvmpipe, default
+// scene (one animated sphere): see the README's "Shadow maps of still casters".
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Sampler.h"

@@ -11,8 +11,9 @@
 namespace penumbra::shadows {
 
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. Moments are made
-// from the (opaque-caster) depth map, blurred with a separable Gaussian and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
-// translucent casters comes from the shared tint map. Where the depth map was kept
+// from the (opaque-caster) depth map, blurred with a separable Gaussian and optionally
+// mip-mapped for trilinear/anisotropic filtering. Coloured tint from translucent casters comes
+// from the shared tint map. Where the depth map was kept
 // (DepthAndTintMaps), only the rectangle the animated casters cover now or covered last frame is
 // converted, blurred and mip-mapped again, widened by the blur's reach.
 class MomentShadowMap final : public ShadowTechnique {
