@@ -141,6 +141,28 @@ TEST(ModelImport, TheImporterHelperSurvivesCrashesAndHangs) {
     }
 }
 
+// Values outside what the equations mean are clamped, and the warning names each kind once (a
+// colour out of range in three channels is one "diffuse colour", not three).
+TEST(ModelImport, OutOfRangeMaterialValuesAreClampedAndNamedOnce) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "penumbra_wild_material";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "wild.obj") << "mtllib wild.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl w\nf 1 2 3\n";
+    std::ofstream(folder / "wild.mtl") << "newmtl w\nKd nan 2000 -1\nd 7\nTf 3 -1 0.5\nillum 4\n";
+    log::takeWarnings();
+    Scene s;
+    importModel(folder / "wild.obj", s);
+    const Material& w = byName(s, "w");
+    EXPECT_EQ(w.diffuse, glm::vec3(0.8f, 1000.0f, 0.0f));
+    EXPECT_FLOAT_EQ(w.alpha, 1.0f);
+    EXPECT_EQ(w.transmission, glm::vec3(1.0f, 0.0f, 0.5f));
+    std::string warning;
+    for (const std::string& line : log::takeWarnings())
+        if (line.find("out of range") != std::string::npos) warning = line;
+    EXPECT_NE(warning.find("material 'w': opacity, transmission, diffuse colour out of range, clamped"),
+              std::string::npos)
+        << warning;
+}
+
 TEST(ModelImport, BareModelGetsGroundSunAndFraming) {
     const Scene s = loadScene(kData / "materials.obj");
     ASSERT_EQ(s.objects.size(), 2u);

@@ -71,7 +71,7 @@ private:
         auto clampTo = [&](float& v, float lo, float hi, float fallback, const char* what) {
             const float before = v;
             v = std::isfinite(v) ? std::clamp(v, lo, hi) : fallback;
-            if (v != before) fixed += std::string(fixed.empty() ? "" : ", ") + what;
+            if (v != before && fixed.find(what) == std::string::npos) fixed += std::string(fixed.empty() ? "" : ", ") + what;
         };
         clampTo(out.alpha, 0.0f, 1.0f, 1.0f, "opacity");
         clampTo(out.alphaCutoff, 0.0f, 2.0f, 0.0f, "alpha cutoff");  // glTF: >= 0; above 1 all is cut
