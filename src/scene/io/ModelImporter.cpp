@@ -288,10 +288,21 @@ private:
         return sendAll(&size, sizeof size) && sendAll(path.data(), path.size());
     }
 
-    bool sendAll(const void* data, std::size_t size) {
-        const char* at = static_cast<const char*>(data);
+    bool sendAll(const void* data, std::size_t size) {  // a dead helper: EPIPE, not SIGPIPE
+        return moveAll(static_cast<const char*>(data), size,
+                       [&](const char* at, std::size_t n) { return ::send(socket_, at, n, MSG_NOSIGNAL); });
+    }
+
+    static bool receiveAll(int socket, void* data, std::size_t size) {
+        return moveAll(static_cast<char*>(data), size,
+                       [socket](char* at, std::size_t n) { return ::recv(socket, at, n, 0); });
+    }
+
+    // Repeats `io` (a send or a recv) until `size` bytes have moved; false when the other side is gone.
+    template <typename Byte, typename Io>
+    static bool moveAll(Byte* at, std::size_t size, Io io) {
         while (size > 0) {
-            const ssize_t n = ::send(socket_, at, size, MSG_NOSIGNAL);  // a dead helper: EPIPE, not SIGPIPE
+            const ssize_t n = io(at, size);
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) return false;
             at += n;
@@ -340,18 +351,6 @@ private:
             const char done = 1;
             if (::send(socket, &done, 1, MSG_NOSIGNAL) != 1) ::_exit(0);
         }
-    }
-
-    static bool receiveAll(int socket, void* data, std::size_t size) {
-        char* at = static_cast<char*>(data);
-        while (size > 0) {
-            const ssize_t n = ::recv(socket, at, size, 0);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) return false;
-            at += n;
-            size -= static_cast<std::size_t>(n);
-        }
-        return true;
     }
 
     // Stops the helper (if any) and returns its wait status.
