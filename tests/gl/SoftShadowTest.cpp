@@ -114,6 +114,49 @@ TEST(SoftShadows, PcssPenumbraGrowsWithDistanceLikeSimilarTriangles) {
     EXPECT_NEAR(widthAt(highH, "pcf-poisson32"), widthAt(lowH, "pcf-poisson32"), 0.02);
 }
 
+// PCF skips its taps where the 4 x 4 depth texels around a receiver show that every tap agrees
+// (pcf/lookup.glsl, tapsAgree). That must never change a pixel: for every kernel, with and without
+// the receiver-plane bias, under a sun and a spot light, the visibility with the skip is exactly
+// the visibility without it. Small maps (128^2) put many pixels in penumbrae; the tilted box and
+// sphere make sloped receivers, where a wrong plane bound would show first.
+TEST(SoftShadows, SkippedPcfTapsLeaveEveryPixelAsTheKernelMakesIt) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [5, 6, 7], "target": [0, 0.5, 0], "fov_deg": 45 },
+      "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "intensity": 0.6, "shadow": { "resolution": 128 } },
+                  { "type": "spot", "position": [2, 5, 2], "direction": [-0.4, -1, -0.4], "angle_deg": 70, "intensity": 0.6,
+                    "shadow": { "resolution": 128 } } ],
+      "objects": [ { "shape": "plane", "size": [10, 10] },
+                   { "shape": "box", "size": [1, 1, 1], "position": [-1, 0.7, 0], "rotation_deg": [20, 30, 10] },
+                   { "shape": "sphere", "radius": 0.6, "position": [1.2, 1.0, 1.0] } ] })");
+    const std::vector<std::string> kernels = {"pcf-poisson16", "pcf-rotated", "pcf-random30", "pcf-jitter",
+                                              "pcf-dither",    "pcf-adaptive", "pcf-grid",    "pcf-gaussian"};
+    for (const std::string& kernel : kernels)
+        for (const char* plane : {"true", "false"})
+            for (int light = 0; light < 2; ++light) {
+                const shadows::ParameterValues common = {{"receiver_plane_bias", plane}};
+                shadows::ParameterValues skipped = common, full = common;
+                skipped.emplace_back("skip_agreeing_taps", "true");
+                full.emplace_back("skip_agreeing_taps", "false");
+                const Frame a = renderChannel(s, OutputMode::Visibility, light, 192, 192, kernel, skipped);
+                const Frame b = renderChannel(s, OutputMode::Visibility, light, 192, 192, kernel, full);
+                int differing = 0, lit = 0, umbra = 0, penumbra = 0;
+                for (int y = 0; y < a.height; ++y)
+                    for (int x = 0; x < a.width; ++x) {
+                        const float v = b.at(x, y).r;
+                        differing += a.at(x, y) != b.at(x, y);
+                        lit += v == 1.0f;
+                        umbra += v == 0.0f;
+                        penumbra += v > 0.0f && v < 1.0f;
+                    }
+                const std::string what = kernel + ", receiver plane " + plane + ", light " + std::to_string(light);
+                EXPECT_EQ(differing, 0) << what;
+                // Each answer the skip can give, and the kernel's own, must be on the picture.
+                EXPECT_GT(lit, 2000) << what;
+                EXPECT_GT(umbra, 500) << what;
+                EXPECT_GT(penumbra, 100) << what;
+            }
+}
+
 // The classic VSM failure: a small occluder high above a large one. Inside the large one's
 // shadow, near the small one's shadow edge, the filtered depths mix two far-apart occluders, the
 // variance is large and light "bleeds" through. The occluders are shadow-only, so the camera

@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+
 #include <epoxy/gl.h>
 
 namespace penumbra::shadows {
@@ -46,6 +48,24 @@ inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
 // texel of margin around them: the whole map when a corner lies behind a perspective light's
 // eye, where its projection would flip.
 TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution);
+
+// Which texels of a map computed from one face of a depth map (moments, min/max depth tiles) must
+// be computed again this frame. All of them, unless `key` (the face's still casters' digest with
+// whatever else the derived map depends on; 0: unknown) is the one it was last computed from:
+// then only where the animated casters were last frame and are now (DepthAndTintMaps::movingTexels).
+class DerivedTexels {
+public:
+    TexelRect changed(std::uint64_t key, const TexelRect& moving, int resolution) {
+        const TexelRect redo = key != 0 && key == holds_ ? unite(moving_, moving) : TexelRect(0, 0, resolution, resolution);
+        holds_ = key;
+        moving_ = moving;
+        return redo;
+    }
+
+private:
+    std::uint64_t holds_ = 0;
+    TexelRect moving_{0};
+};
 
 // Clears colour attachment 0 of `framebuffer` to `colour` inside `rect` only (nothing if empty).
 void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour);

@@ -125,15 +125,13 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
             m.levelViews[face].push_back(gl::Texture::view2D(m.moments, m.format, f, level));
         }
     }
-    m.holds.assign(static_cast<std::size_t>(faces), 0);
-    m.movingTexels.assign(static_cast<std::size_t>(faces), TexelRect(0));
+    m.derived.assign(static_cast<std::size_t>(faces), DerivedTexels{});
 }
 
 TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
     const DepthAndTintMaps::LightMaps& depth = maps_.maps(i);
     const LightSpace& space = (*frame.lightSpaces)[i];
-    const TexelRect whole(0, 0, m.depthResolution, m.depthResolution);
     // MSAA draws its own depth every frame; the rest is what the moments are a function of.
     const std::uint64_t still = depth.stillKeys[face];
     const std::uint64_t key = still == 0 || m.multisampledDepth.id() != 0
@@ -142,11 +140,7 @@ TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const 
                                         .add(still, positiveExponent_, negativeExponent_, space.near, space.far,
                                              space.perspective, blurRadius_)
                                         .value();
-    const TexelRect moving = depth.movingTexels[face];
-    const TexelRect changed = key != 0 && key == m.holds[face] ? unite(m.movingTexels[face], moving) : whole;
-    m.holds[face] = key;
-    m.movingTexels[face] = moving;
-    return changed;
+    return m.derived[face].changed(key, depth.movingTexels[face], m.depthResolution);
 }
 
 void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& depthTexels, const ShadowFrame& frame) {

@@ -49,10 +49,7 @@ private:
         // Per face, per mip level: a render target, and a view of the level alone (mip input).
         std::vector<std::vector<gl::Framebuffer>> levelTargets;
         std::vector<std::vector<gl::Texture>> levelViews;
-        // Per face: the digest of the still depth and settings the moments were made from (0:
-        // none), and the depth texels the animated casters covered then.
-        std::vector<std::uint64_t> holds;
-        std::vector<TexelRect> movingTexels;
+        std::vector<DerivedTexels> derived;  // per face: what the moments were made from
         gl::Framebuffer rawTarget, scratchTarget;
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;

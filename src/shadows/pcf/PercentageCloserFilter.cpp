@@ -44,7 +44,10 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
         Parameter::real("radius_texels", radiusTexels_, 0.0f, 16.0f, "filter radius in shadow-map texels"),
         Parameter::real("radius_world", radiusWorld_, 0.0f, 2.0f, "> 0: filter radius in world units instead of texels"),
         Parameter::flag("receiver_plane_bias", receiverPlane_,
-                        "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)")};
+                        "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)"),
+        Parameter::flag("skip_agreeing_taps", skipAgreeing_,
+                        "skip the taps where the 4 x 4 depth texels around the receiver show they all agree "
+                        "(same pixels; radius up to 1.5 texels)")};
     if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian)
         p.push_back(Parameter::integer("kernel_size", kernelSize_, 1, 9, "N of the N x N grid"));
     if (kernel_ == Kernel::Poisson || kernel_ == Kernel::Random || kernel_ == Kernel::Rotated || kernel_ == Kernel::Adaptive)
@@ -56,8 +59,29 @@ std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
     return {"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
 }
 
+// How far, along x or y, the kernel's taps reach in units of its radius: the 4 x 4 texels of
+// tapsAgree() hold every tap only while radius * reach stays under ~1.5 texels, and a tighter
+// bound leaves fewer pixels where the taps straddle a fifth texel.
+float PercentageCloserFilter::tapReach() const {
+    const auto& points = poisson_.points();
+    const std::size_t taps = static_cast<std::size_t>(std::clamp(taps_, 1, PoissonDisk::kPoints));
+    float axis = 0.0f, length = 0.0f;  // over the Poisson taps in use
+    for (std::size_t i = 0; i < taps; ++i) {
+        axis = std::max({axis, std::abs(points[i].x), std::abs(points[i].y)});
+        length = std::max(length, glm::length(points[i]));
+    }
+    switch (kernel_) {
+        case Kernel::Poisson: case Kernel::Dither: return axis;
+        case Kernel::Rotated: return length;  // any turn of the disk
+        case Kernel::Adaptive: return std::max(axis, 0.7072f);  // the ring probes at 45 degrees (cos, rounded up)
+        default: return 1.0f;  // grid corners, unit-disk random and jittered taps
+    }
+}
+
 void PercentageCloserFilter::bindLookup(const gl::Program& lighting) const {
-    maps_.bind();
+    maps_.bind(/*rawDepth=*/true);  // tapsAgree() gathers raw depth
+    lighting.set("uSkipAgreeing", skipAgreeing_ ? 1 : 0);
+    lighting.set("uTapReach", tapReach());
     lighting.set("uKernelSize", kernelSize_);
     lighting.set("uTaps", std::clamp(taps_, 1, PoissonDisk::kPoints));
     lighting.set("uRadiusTexels", radiusTexels_);

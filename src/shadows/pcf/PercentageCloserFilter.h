@@ -27,6 +27,7 @@ protected:
     std::vector<Parameter> declareParameters() override;
 
 private:
+    float tapReach() const;
     std::string name_;
     Kernel kernel_;
     int taps_;
@@ -34,6 +35,7 @@ private:
     float radiusTexels_ = 1.5f;
     float radiusWorld_ = 0.0f;
     bool receiverPlane_ = true;
+    bool skipAgreeing_ = true;
     PoissonDisk poisson_;
     gl::Texture jitter_;
 };
