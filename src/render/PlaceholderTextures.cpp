@@ -42,6 +42,7 @@ void PlaceholderTextures::bindAll() const {
     }
     depthArray_.bind(gpu::kUnitLayered);
     whiteArray_.bind(gpu::kUnitScreenShadow);
+    whiteArray_.bind(gpu::kUnitDepthTiles);
     white3D_.bind(gpu::kUnitJitter);
 }
 

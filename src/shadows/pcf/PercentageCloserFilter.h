@@ -2,6 +2,7 @@
 #include "gl/Texture.h"
 #include "shadows/common/SharedMapTechnique.h"
 #include "shadows/common/PoissonDisk.h"
+#include "shadows/pcf/DepthTileBounds.h"
 #include "shadows/pcf/PcfKernel.h"
 
 namespace penumbra::shadows {
@@ -20,8 +21,9 @@ public:
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/pcf/lookup.glsl"; }
     std::vector<std::string> lookupDefines() const override;
+    void renderMaps(const ShadowFrame& frame) override;
     void bindLookup(const gl::Program& lighting) const override;
-    std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes(); }
+    std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes() + tileBounds_.memoryBytes(); }
 
 protected:
     std::vector<Parameter> declareParameters() override;
@@ -38,6 +40,7 @@ private:
     bool skipAgreeing_ = true;
     PoissonDisk poisson_;
     gl::Texture jitter_;
+    DepthTileBounds tileBounds_;  // with skipAgreeing_
 };
 
 }  // namespace penumbra::shadows

@@ -55,12 +55,6 @@ vec4 shadowRawCube(int slot, vec3 dir, vec3 dx, vec3 dy) {
 }
 vec4 shadowRawLod2D(int slot, vec2 uv) { return shadowRaw2D(slot, uv, vec2(0.0), vec2(0.0)); }
 vec4 shadowRawLodCube(int slot, vec3 dir) { return shadowRawCube(slot, dir, vec3(0.0), vec3(0.0)); }
-// The 2 x 2 raw depth texels around uv, in textureGather's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
-vec4 shadowRawGather2D(int slot, vec2 uv) {
-#define S(i) textureGather(uShadowRaw[i], uv, 0)
-    SLOT_SWITCH_4(S)
-#undef S
-}
 // Alpha of the 2 x 2 raw texels around uv (2D) or dir (cube), without filtering.
 vec4 shadowRawGatherAlpha2D(int slot, vec2 uv) {
 #define S(i) textureGather(uShadowRaw[i], uv, 3)
