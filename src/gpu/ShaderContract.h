@@ -45,15 +45,15 @@ GPU_CONST kUnitRawCube = 20;
 GPU_CONST kUnitLayered = 22;        // sampler2DArrayShadow of a LayeredDepthMap (cascades, LiSPSM tiles)
 GPU_CONST kUnitScreenShadow = 23;   // R8 array, per-light visibility in screen space (shadow volumes, planar)
 GPU_CONST kUnitScreenDepth = 24;    // the camera depth pre-pass of that mask
-GPU_CONST kUnitDepthTiles = 25;     // RGBA32F array, a layer per 2D slot: PCF's DepthTileBounds
+GPU_CONST kUnitDepthTiles = 25;     // RGBA32F array, a layer per 2D slot: DepthTileBounds (PCF, PCSS)
 GPU_CONST kUnitDualDepth = 28;      // camera transparency: dual depth peeling bounds
 GPU_CONST kUnitStochasticDepth = 29;  // stochastic transparency's multisampled depth
 GPU_CONST kUnitPeelDepth = 30;      // depth peeling: the previous layer
 GPU_CONST kUnitOpaqueDepth = 31;    // the opaque surfaces' depth
 GPU_CONST kLightingUnits = 32;      // units the lighting shader may read (all unbound before shadow passes)
 
-// PCF's DepthTileBounds: tiles of kDepthTile^2 texels, each bounding its texels and kDepthTileBorder more
-// on every side (as far as a PCF tap of the tile's receivers may land).
+// DepthTileBounds: level-0 tiles of kDepthTile^2 texels, each bounding its texels and
+// kDepthTileBorder more on every side; level k: tiles of kDepthTile << k, border 8 * 2^k - 6.
 GPU_CONST kDepthTile = 8;
 GPU_CONST kDepthTileBorder = 2;
 

@@ -53,16 +53,17 @@ struct Pair {
     }
 };
 
-// Every level of a texture, as floats (depth or RGBA).
+// Every level of a texture (every layer of an array), as floats (depth or RGBA).
 std::vector<float> textureLevels(const shadows::DebugView& view) {
     std::vector<float> all;
     for (GLint level = 0;; ++level) {
-        GLint w = 0, h = 0;
+        GLint w = 0, h = 0, layers = 1;
         glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_WIDTH, &w);
         glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_HEIGHT, &h);
+        if (view.target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_DEPTH, &layers);
         if (w == 0 || h == 0) return all;
         const std::size_t channels = view.depth ? 1 : 4, first = all.size();
-        all.resize(first + channels * static_cast<std::size_t>(w * h));
+        all.resize(first + channels * static_cast<std::size_t>(w * h * layers));
         glGetTextureImage(view.texture, level, view.depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
                           static_cast<GLsizei>((all.size() - first) * sizeof(float)), all.data() + first);
     }
@@ -127,7 +128,7 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
 
 // cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept. A wide
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
-INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16",
+INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16",
                                                                   "cascaded", "lispsm"));
 
 // Without an animated caster, the second frame of an unchanged view draws no triangle into any

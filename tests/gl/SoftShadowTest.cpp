@@ -119,11 +119,10 @@ TEST(SoftShadows, PcssPenumbraGrowsWithDistanceLikeSimilarTriangles) {
 // the receiver-plane bias, under a sun and a spot light, the visibility with the skip is exactly
 // the visibility without it. Small maps (128^2) put many pixels in penumbrae; the tilted box and
 // sphere make sloped receivers, where a wrong plane bound would show first.
-// Pixels of `kernel` with the skip on and off (the `light`'s visibility), and how many of them
-// differ; counts of the kernel's lit, umbra and penumbra pixels in `classes`.
-int pixelsChangedBySkipping(scene::Scene& s, const std::string& kernel, const char* receiverPlane, int light,
+// Renders `kernel` (with `common` parameters) with the tap skip on and off, the `light`'s
+// visibility: how many pixels differ; the kernel's lit, umbra and penumbra pixels in `classes`.
+int pixelsChangedBySkipping(scene::Scene& s, const std::string& kernel, const shadows::ParameterValues& common, int light,
                             glm::ivec3& classes) {
-    const shadows::ParameterValues common = {{"receiver_plane_bias", receiverPlane}};
     shadows::ParameterValues skipped = common, full = common;
     skipped.emplace_back("skip_agreeing_taps", "true");
     full.emplace_back("skip_agreeing_taps", "false");
@@ -143,26 +142,29 @@ int pixelsChangedBySkipping(scene::Scene& s, const std::string& kernel, const ch
 const std::vector<std::string> kPcfKernels = {"pcf-poisson16", "pcf-rotated", "pcf-random30", "pcf-jitter",
                                               "pcf-dither",    "pcf-adaptive", "pcf-grid",    "pcf-gaussian"};
 
+// The main test's scene: a sun and a spot light over a tilted box and a sphere, 128^2 maps.
+const char* kSkipScene = R"({
+  "camera": { "position": [5, 6, 7], "target": [0, 0.5, 0], "fov_deg": 45 },
+  "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "intensity": 0.6, "shadow": { "resolution": 128 } },
+              { "type": "spot", "position": [2, 5, 2], "direction": [-0.4, -1, -0.4], "angle_deg": 70, "intensity": 0.6,
+                "shadow": { "resolution": 128 } } ],
+  "objects": [ { "shape": "plane", "size": [10, 10] },
+               { "shape": "box", "size": [1, 1, 1], "position": [-1, 0.7, 0], "rotation_deg": [20, 30, 10] },
+               { "shape": "sphere", "radius": 0.6, "position": [1.2, 1.0, 1.0] } ] })";
+
 // PCF skips its taps where depth bounds of the receiver's tile show that every tap agrees
 // (pcf/lookup.glsl, tapsAgree). That must never change a pixel: for every kernel, with and without
 // the receiver-plane bias, under a sun and a spot light, the visibility with the skip is exactly
 // the visibility without it. Small maps (128^2) put many pixels in penumbrae; the tilted box and
 // sphere make sloped receivers, where a wrong plane bound would show first.
 TEST(SoftShadows, SkippedPcfTapsLeaveEveryPixelAsTheKernelMakesIt) {
-    scene::Scene s = sceneFromJson(R"({
-      "camera": { "position": [5, 6, 7], "target": [0, 0.5, 0], "fov_deg": 45 },
-      "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "intensity": 0.6, "shadow": { "resolution": 128 } },
-                  { "type": "spot", "position": [2, 5, 2], "direction": [-0.4, -1, -0.4], "angle_deg": 70, "intensity": 0.6,
-                    "shadow": { "resolution": 128 } } ],
-      "objects": [ { "shape": "plane", "size": [10, 10] },
-                   { "shape": "box", "size": [1, 1, 1], "position": [-1, 0.7, 0], "rotation_deg": [20, 30, 10] },
-                   { "shape": "sphere", "radius": 0.6, "position": [1.2, 1.0, 1.0] } ] })");
+    scene::Scene s = sceneFromJson(kSkipScene);
     for (const std::string& kernel : kPcfKernels)
         for (const char* plane : {"true", "false"})
             for (int light = 0; light < 2; ++light) {
                 glm::ivec3 classes;
                 const std::string what = kernel + ", receiver plane " + plane + ", light " + std::to_string(light);
-                EXPECT_EQ(pixelsChangedBySkipping(s, kernel, plane, light, classes), 0) << what;
+                EXPECT_EQ(pixelsChangedBySkipping(s, kernel, {{"receiver_plane_bias", plane}}, light, classes), 0) << what;
                 // Each answer the skip can give, and the kernel's own, must be on the picture.
                 EXPECT_GT(classes.x, 2000) << what << ": lit";
                 EXPECT_GT(classes.y, 500) << what << ": umbra";
@@ -184,9 +186,25 @@ TEST(SoftShadows, SkippedPcfTapsKeepAnOccluderCrossingASlope) {
                    { "shape": "box", "size": [0.3, 4, 0.3], "position": [3, 0, -3] } ] })");
     for (const std::string& kernel : kPcfKernels) {
         glm::ivec3 classes;
-        EXPECT_EQ(pixelsChangedBySkipping(s, kernel, "true", 0, classes), 0) << kernel;
+        EXPECT_EQ(pixelsChangedBySkipping(s, kernel, {{"receiver_plane_bias", "true"}}, 0, classes), 0) << kernel;
         EXPECT_GT(classes.z, 100) << kernel << ": partly lit where the slab crosses";
     }
+}
+
+// PCSS skips its blocker search and filter where the tile bounds show no blocker in the search
+// region (depth_tiles.glsl): the same pixels as searching, for small and large lights (search
+// radii within level 0's border and up to the 48-texel cap, so several levels answer).
+TEST(SoftShadows, SkippedPcssSearchesLeaveEveryPixelAsSearchingMakesIt) {
+    scene::Scene s = sceneFromJson(kSkipScene);
+    for (const char* size : {"0.05", "0.3", "2.0"})
+        for (int light = 0; light < 2; ++light) {
+            glm::ivec3 classes;
+            const std::string what = std::string("light size ") + size + ", light " + std::to_string(light);
+            const shadows::ParameterValues sizes = {{"light_size", size}, {"sun_angle_deg", size}};
+            EXPECT_EQ(pixelsChangedBySkipping(s, "pcss", sizes, light, classes), 0) << what;
+            EXPECT_GT(classes.x, 2000) << what << ": lit";
+            EXPECT_GT(classes.z, 100) << what << ": penumbra";
+        }
 }
 
 // The classic VSM failure: a small occluder high above a large one. Inside the large one's

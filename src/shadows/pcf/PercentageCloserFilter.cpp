@@ -46,8 +46,7 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
         Parameter::flag("receiver_plane_bias", receiverPlane_,
                         "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)"),
         Parameter::flag("skip_agreeing_taps", skipAgreeing_,
-                        "skip the taps where depth bounds of the receiver's 8 x 8-texel tile show they all agree "
-                        "(same pixels; radius up to 2 texels)")};
+                        "skip the taps where depth bounds of the receiver's tile show they all agree (same pixels)")};
     if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian)
         p.push_back(Parameter::integer("kernel_size", kernelSize_, 1, 9, "N of the N x N grid"));
     if (kernel_ == Kernel::Poisson || kernel_ == Kernel::Random || kernel_ == Kernel::Rotated || kernel_ == Kernel::Adaptive)
@@ -59,9 +58,8 @@ std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
     return {"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
 }
 
-// How far, along x or y, the kernel's taps reach in units of its radius: tapsAgree() answers only
-// while radius * reach stays within the tile bounds' border, and bounds over a smaller box of
-// texels are tighter.
+// How far, along x or y, the kernel's taps reach in units of its radius: tapsAgree() bounds the
+// texels within that of the receiver, and bounds over a smaller box are tighter.
 float PercentageCloserFilter::tapReach() const {
     const auto& points = poisson_.points();
     const std::size_t taps = static_cast<std::size_t>(std::clamp(taps_, 1, PoissonDisk::kPoints));

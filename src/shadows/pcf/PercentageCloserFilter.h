@@ -1,8 +1,8 @@
 #pragma once
 #include "gl/Texture.h"
 #include "shadows/common/SharedMapTechnique.h"
+#include "shadows/common/DepthTileBounds.h"
 #include "shadows/common/PoissonDisk.h"
-#include "shadows/pcf/DepthTileBounds.h"
 #include "shadows/pcf/PcfKernel.h"
 
 namespace penumbra::shadows {
@@ -23,6 +23,11 @@ public:
     std::vector<std::string> lookupDefines() const override;
     void renderMaps(const ShadowFrame& frame) override;
     void bindLookup(const gl::Program& lighting) const override;
+    std::vector<DebugView> debugViews() const override {
+        std::vector<DebugView> views = maps_.debugViews(), bounds = tileBounds_.debugViews(maps_.slots());
+        views.insert(views.end(), bounds.begin(), bounds.end());
+        return views;
+    }
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes() + tileBounds_.memoryBytes(); }
 
 protected:

@@ -3,6 +3,7 @@
 // shadow lecture and the thesis comparison: grid, hardware bilinear, Gaussian, Poisson disk,
 // uniform random, jittered disk texture, dither, per-pixel rotated disk, adaptive.
 #include "src/shadows/common/glsl/kernels.glsl"
+#include "src/shadows/common/glsl/depth_tiles.glsl"
 #include "src/shadows/pcf/PcfKernel.h"
 
 // The kernel is a compile-time constant (PercentageCloserFilter::lookupDefines), so that the
@@ -13,7 +14,6 @@ uniform int uTaps;             // Poisson / random / jitter / dither tap count
 uniform float uRadiusTexels;   // filter radius in shadow texels
 uniform float uRadiusWorld;    // > 0: radius in world units instead
 uniform int uReceiverPlane;    // 1: receiver-plane depth bias per tap
-uniform int uSkipAgreeing;     // 1: skip the taps where tapsAgree() knows their answer
 uniform float uTapReach;       // the farthest tap along x or y, in units of the radius
 layout(binding = kUnitJitter) uniform sampler3D uJitter;  // rg, ba: two unit-disk offsets per layer
 
@@ -23,43 +23,8 @@ float tap(ShadowSite s, vec2 offsetTexels) {
     return compareAt(s, offsetTexels, planeOffset);
 }
 
-layout(binding = kUnitDepthTiles) uniform sampler2DArray uDepthTiles;  // DepthTileBounds: (a, g, farthest)
-
-// What every tap of a kernel reaching `reach` texels (along each axis) returns, where the depth
-// bounds of the receiver's tile (DepthTileBounds) show they all return the same: 1 (lit), 0
-// (shadowed); -1 where they do not, or where taps may land past the tile's border (radius *
-// uTapReach above kDepthTileBorder texels, cube maps): the taps must run. Exact, not a guess:
-// a nearest-filtered tap landing at p + o reads texel floor(p + o), whose centre c lies within
-// reach + 0.5 of p, and compares it with s.depth + clamp(slope . o, +-0.01), which is at most
-// s.depth + max(slope . (c - p) + |slope|/2, -0.01). Lit: the tile's plane under every texel,
-// g . c + a, lies behind that over the whole box of centres (its minimum is at a corner).
-// Shadowed: the farthest texel lies in front of the lowest reference any tap can have.
-// Measured on llvmpipe (default scene, pcf-poisson16): one fetch, where 4 gathers of the 16
-// texels around the receiver cost about what 9 of the 16 taps do.
-float tapsAgree(ShadowSite s, float reach) {
-    if (uSkipAgreeing == 0 || s.cube || reach + 1e-3 > float(kDepthTileBorder)) return -1.0;
-    vec2 slope = uReceiverPlane != 0 ? s.depthSlope : vec2(0.0);
-    if (any(isnan(slope)) || any(isinf(slope))) return -1.0;
-    vec2 p = s.coord.xy * s.resolution;
-    vec2 tile = floor(p / float(kDepthTile));
-    vec4 bounds = texelFetch(uDepthTiles, ivec3(tile, s.slot), 0);
-    vec2 g = bounds.yz;
-    vec2 local = p - tile * float(kDepthTile);  // p relative to the tile's corner
-    float box = reach + 0.5 + 1e-3;             // how far a landing texel's centre lies from p, per axis
-    float planeAtP = dot(g, local) + bounds.x;
-    float slack = 0.5 * (abs(slope.x) + abs(slope.y)) + 1e-6;  // + rounding of the references
-    bool behindPlane = planeAtP - dot(abs(g - slope), vec2(box)) >= s.depth + slack;
-    bool behindFloor = planeAtP - dot(abs(g), vec2(box)) >= s.depth - 0.01 + 1e-6;
-    if (behindPlane && behindFloor) return 1.0;
-    float lowest = s.depth + max(-(abs(slope.x) + abs(slope.y)) * reach, -0.01) - 1e-6;
-    // A reference past 1 may be clamped to 1 by the sampler: "in front" needs depths below 1.
-    return bounds.w < lowest && bounds.w < 1.0 ? 0.0 : -1.0;
-}
-
-// Every kernel loop starts with `if (agreed >= 0.0) break;`, `agreed` being tapsAgree()'s answer.
-// A loop, not an if: llvmpipe runs both sides of an if for its 8-pixel group, but leaves a loop
-// once no lane is left in it (gallivm's lp_exec_endloop). Where the whole group agrees, the kernel
-// costs one (masked) tap.
+// Every kernel loop starts with `if (agreed >= 0.0) break;`, `agreed` being tapsAgree()'s answer
+// (common/glsl/depth_tiles.glsl).
 float poisson(ShadowSite s, float radius, mat2 rot, int count, float agreed) {
     float sum = 0.0;
     for (int i = 0; i < count; ++i) {
@@ -88,7 +53,7 @@ float grid(ShadowSite s, float radius, bool gaussian, float agreed) {
 float percentageCloser(ShadowSite s, float radius) {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     if (kKernel == kPcfBilinear) return tap(s, vec2(0.0));
-    float agreed = tapsAgree(s, radius * uTapReach);
+    float agreed = tapsAgree(s, radius * uTapReach, uReceiverPlane != 0 ? s.depthSlope : vec2(0.0));
     if (kKernel == kPcfGrid) return grid(s, radius, false, agreed);
     if (kKernel == kPcfGaussian) return grid(s, radius, true, agreed);
     if (kKernel == kPcfPoisson) return poisson(s, radius, mat2(1.0), uTaps, agreed);

@@ -1,5 +1,5 @@
 #version 450 core
-// One tile of DepthTileBounds: over the tile's texels and kDepthTileBorder more on every side
+// Level 0 of DepthTileBounds, one tile: over the tile's texels and kDepthTileBorder more on every side
 // (clamped to the map as a tap's lookup is, at the unclamped texel's position), a plane under
 // every depth, d >= g . c + a with c the texel's centre relative to the tile's corner, and the
 // farthest depth. g is the tile's slope across its middle row and column: any g gives a true
