@@ -116,8 +116,20 @@ vec3 colouredByTiles(ShadowSite s, int side) {
     vec2 tileCoord = m.texel / float(side) - 0.5;
     ivec2 base = ivec2(floor(tileCoord));
     vec2 f = tileCoord - vec2(base);
-    vec4 t00 = tileStats(s, m, base, side), t10 = tileStats(s, m, base + ivec2(1, 0), side);
-    vec4 t01 = tileStats(s, m, base + ivec2(0, 1), side), t11 = tileStats(s, m, base + ivec2(1, 1), side);
+    // The 2 x 2 tiles' counts, fetched in a loop that breaks first thing where no layer covers the
+    // receiver: llvmpipe runs an if's body for every 8-pixel group (the return above saves
+    // nothing), but leaves a loop once no lane is left in it, so groups without colour fetch one
+    // tile instead of four. The bound comes from a uniform: an unrolled loop would not end early.
+    vec4 t00 = vec4(0.0), t10 = vec4(0.0), t01 = vec4(0.0), t11 = vec4(0.0);
+    int tiles = uTileSide > 0 ? 4 : 0;
+    for (int k = 0; k < tiles; ++k) {
+        if (own <= 0.0) break;
+        vec4 v = tileStats(s, m, base + ivec2(k & 1, k >> 1), side);
+        t00 = k == 0 ? v : t00;  // selects, not an array: llvmpipe spills dynamically indexed arrays
+        t10 = k == 1 ? v : t10;
+        t01 = k == 2 ? v : t01;
+        t11 = k == 3 ? v : t11;
+    }
     vec4 countAndDepth = vec4(t00.a, t10.a, t01.a, t11.a);
     vec4 covered = floor(countAndDepth), farthest = countAndDepth - covered;
     // The receiver's nearest depth over the four tiles: at one of their outer corners (it is planar).
