@@ -189,22 +189,36 @@ TEST(SoftShadows, SkippedPcfTapsKeepAnOccluderCrossingASlope) {
         EXPECT_EQ(pixelsChangedBySkipping(s, kernel, {{"receiver_plane_bias", "true"}}, 0, classes), 0) << kernel;
         EXPECT_GT(classes.z, 100) << kernel << ": partly lit where the slab crosses";
     }
+    // PCSS over the same crossing, with small and large lights, on a 512^2 map (coarse levels
+    // inside the map): its "every texel in front" answer, and wide filters from self-blockers.
+    s.lights[0].shadow.resolution = 512;
+    for (const char* size : {"0.5", "3.0", "20.0"}) {
+        glm::ivec3 classes;
+        EXPECT_EQ(pixelsChangedBySkipping(s, "pcss", {{"sun_angle_deg", size}}, 0, classes), 0) << "pcss, sun " << size;
+        EXPECT_GT(classes.y, 500) << "pcss, sun " << size << ": umbra";
+    }
 }
 
 // PCSS skips its blocker search and filter where the tile bounds show no blocker in the search
 // region (depth_tiles.glsl): the same pixels as searching, for small and large lights (search
 // radii within level 0's border and up to the 48-texel cap, so several levels answer).
 TEST(SoftShadows, SkippedPcssSearchesLeaveEveryPixelAsSearchingMakesIt) {
-    scene::Scene s = sceneFromJson(kSkipScene);
-    for (const char* size : {"0.05", "0.3", "2.0"})
+    // 512^2 maps: the coarse levels that wide searches use need tiles whose border stays inside
+    // the map (at 128^2 every tile of level 2 and up touches an edge, and never agrees).
+    std::string json = kSkipScene;
+    for (std::size_t at; (at = json.find("\"resolution\": 128")) != std::string::npos;) json.replace(at + 15, 3, "512");
+    scene::Scene s = sceneFromJson(json);
+    int penumbra = 0;
+    for (const char* size : {"0.05", "0.3", "2.0", "5.0"})
         for (int light = 0; light < 2; ++light) {
             glm::ivec3 classes;
             const std::string what = std::string("light size ") + size + ", light " + std::to_string(light);
             const shadows::ParameterValues sizes = {{"light_size", size}, {"sun_angle_deg", size}};
             EXPECT_EQ(pixelsChangedBySkipping(s, "pcss", sizes, light, classes), 0) << what;
             EXPECT_GT(classes.x, 2000) << what << ": lit";
-            EXPECT_GT(classes.z, 100) << what << ": penumbra";
+            penumbra += classes.z;
         }
+    EXPECT_GT(penumbra, 1000) << "penumbrae, all sizes";
 }
 
 // The classic VSM failure: a small occluder high above a large one. Inside the large one's

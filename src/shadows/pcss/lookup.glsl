@@ -18,6 +18,30 @@ float penumbraTexels(int light, float lightSize, float receiver, float blocker, 
     return lightSize * (receiver - blocker) / max(blocker, 1e-4) / (texelScale * receiver);
 }
 
+// What the search and the filter can only end with, where the receiver's tile bounds show it: 1
+// (lit) or 0 (shadowed); -1 where the taps must run. No texel of the search region lies nearer
+// than the tile's plane allows, so any blockers found average at least that far, and the filter
+// is at most as wide as that nearest blocker makes it. Lit when no search texel can be a
+// blocker, or when every texel within that widest filter lies behind the receiver (a slope or a
+// curved caster finds itself as blockers, yet its narrow filter passes); shadowed when every
+// texel of the tile lies in front. The lookup then returns tint or 0, exactly as the taps would.
+float searchOutcome(ShadowSite s, int light, float lightSize, float receiver, float texelScale, float searchTexels) {
+    float planeAtP, farthest;
+    vec2 g;
+    if (!tileAround(s, searchTexels, planeAtP, g, farthest)) return -1.0;
+    float slope = abs(g.x) + abs(g.y);
+    float nearest = planeAtP - slope * (searchTexels + 0.5 + 1e-3);  // no search texel lies nearer
+    if (nearest >= s.depth + 1e-6) return 1.0;  // no blocker
+    // 1.01, 1e-3: the rounding of the blockers' mean and of the radius.
+    float widest = clamp(0.5 * penumbraTexels(light, lightSize, receiver, worldShadowDepth(light, clamp(nearest, 0.0, 1.0)), texelScale),
+                         0.5, uMaxRadiusTexels) * 1.01 + 1e-3;
+    if (widest > searchTexels) return -1.0;  // the filter may read past the tile's texels
+    if (planeAtP - slope * (widest + 0.5 + 1e-3) >= s.depth + 1e-6) return 1.0;
+    // Every texel in front: every search tap a blocker, every filter tap shadowed. A reference
+    // past 1 may be clamped to 1 by the sampler: "in front" needs depths below 1.
+    return farthest < s.depth - 1e-6 && farthest < 1.0 ? 0.0 : -1.0;
+}
+
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     if (!s.inside) return vec3(1.0);
@@ -32,10 +56,9 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     //    penumbra a blocker at the near plane would cast.
     float searchTexels = clamp(0.5 * penumbraTexels(light, lightSize, receiver, directional ? receiver - 0.25 * (receiver - near) : near, texelScale),
                                1.0, uMaxRadiusTexels);
-    // Lit where the tile bounds show no texel of the search region in front of the receiver: no
-    // blocker, so both loops break before their first tap (depth_tiles.glsl). Measured on llvmpipe,
-    // default scene: the opaque pass XX.
-    float agreed = tapsAgree(s, searchTexels, vec2(0.0)) == 1.0 ? 1.0 : -1.0;
+    // Where the tile bounds show how the search and filter end (depth_tiles.glsl), both loops break
+    // before their first tap.
+    float agreed = searchOutcome(s, light, lightSize, receiver, texelScale, searchTexels);
     mat2 rot = pixelRotation();
     float blockerSum = 0.0;
     int blockers = 0;
@@ -53,8 +76,10 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     float blocker = blockerSum / float(blockers);
     float radius = clamp(0.5 * penumbraTexels(light, lightSize, receiver, blocker, texelScale), 0.5, uMaxRadiusTexels);
     float lit = 0.0;
+    // The bounds again, over the filter the blockers found ask for: every tap may still agree.
+    float filterAgreed = agreed >= 0.0 ? agreed : tapsAgree(s, radius, vec2(0.0));
     for (int i = 0; i < uFilterTaps; ++i) {
-        if (agreed >= 0.0) { lit = float(uFilterTaps); break; }
+        if (filterAgreed >= 0.0) { lit = filterAgreed * float(uFilterTaps); break; }
         lit += compareAt(s, poissonTap(i, rot, radius), 0.0);
     }
     return lit / float(uFilterTaps) * tintAt(s);
