@@ -45,8 +45,7 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
         Parameter::real("radius_world", radiusWorld_, 0.0f, 2.0f, "> 0: filter radius in world units instead of texels"),
         Parameter::flag("receiver_plane_bias", receiverPlane_,
                         "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)"),
-        Parameter::flag("skip_agreeing_taps", skipAgreeing_,
-                        "skip the taps where depth bounds of the receiver's tile show they all agree (same pixels)")};
+        skipAgreeingParameter("skip the taps where depth bounds of the receiver's tile show they all agree")};
     if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian)
         p.push_back(Parameter::integer("kernel_size", kernelSize_, 1, 9, "N of the N x N grid"));
     if (kernel_ == Kernel::Poisson || kernel_ == Kernel::Random || kernel_ == Kernel::Rotated || kernel_ == Kernel::Adaptive)
@@ -76,16 +75,9 @@ float PercentageCloserFilter::tapReach() const {
     }
 }
 
-void PercentageCloserFilter::renderMaps(const ShadowFrame& frame) {
-    maps_.render(frame);
-    if (skipAgreeing_) tileBounds_.update(maps_);
-    else tileBounds_.forget();
-}
-
 void PercentageCloserFilter::bindLookup(const gl::Program& lighting) const {
     maps_.bind();
-    tileBounds_.bind();
-    lighting.set("uSkipAgreeing", skipAgreeing_ ? 1 : 0);
+    bindTileBounds(lighting);
     lighting.set("uTapReach", tapReach());
     lighting.set("uKernelSize", kernelSize_);
     lighting.set("uTaps", std::clamp(taps_, 1, PoissonDisk::kPoints));

@@ -1,7 +1,6 @@
 #pragma once
 #include "gl/Texture.h"
-#include "shadows/common/SharedMapTechnique.h"
-#include "shadows/common/DepthTileBounds.h"
+#include "shadows/common/KernelTechnique.h"
 #include "shadows/common/PoissonDisk.h"
 #include "shadows/pcf/PcfKernel.h"
 
@@ -9,7 +8,7 @@ namespace penumbra::shadows {
 
 // Fixed-size penumbra: PCF over one of the kernels of pcf/lookup.glsl. The jitter texture is
 // built once.
-class PercentageCloserFilter final : public SharedMapTechnique {
+class PercentageCloserFilter final : public KernelTechnique {
 public:
     enum class Kernel {
         Grid = gpu::kPcfGrid, Bilinear = gpu::kPcfBilinear, Gaussian = gpu::kPcfGaussian, Poisson = gpu::kPcfPoisson,
@@ -21,14 +20,8 @@ public:
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/pcf/lookup.glsl"; }
     std::vector<std::string> lookupDefines() const override;
-    void renderMaps(const ShadowFrame& frame) override;
     void bindLookup(const gl::Program& lighting) const override;
-    std::vector<DebugView> debugViews() const override {
-        std::vector<DebugView> views = maps_.debugViews(), bounds = tileBounds_.debugViews(maps_.slots());
-        views.insert(views.end(), bounds.begin(), bounds.end());
-        return views;
-    }
-    std::size_t memoryBytes() const override { return maps_.memoryBytes() + jitter_.memoryBytes() + tileBounds_.memoryBytes(); }
+    std::size_t memoryBytes() const override { return KernelTechnique::memoryBytes() + jitter_.memoryBytes(); }
 
 protected:
     std::vector<Parameter> declareParameters() override;
@@ -42,10 +35,8 @@ private:
     float radiusTexels_ = 1.5f;
     float radiusWorld_ = 0.0f;
     bool receiverPlane_ = true;
-    bool skipAgreeing_ = true;
     PoissonDisk poisson_;
     gl::Texture jitter_;
-    DepthTileBounds tileBounds_;  // with skipAgreeing_
 };
 
 }  // namespace penumbra::shadows

@@ -8,20 +8,12 @@ std::vector<Parameter> PercentageCloserSoftShadows::declareParameters() {
             Parameter::real("light_size", lightSize_, 0.0f, 5.0f, "world diameter of local lights without a scene `size`"),
             Parameter::real("sun_angle_deg", sunAngle_, 0.0f, 20.0f, "angular diameter of suns without a scene `size`"),
             Parameter::real("max_radius_texels", maxRadius_, 1.0f, 128.0f, "cap on search and filter radius (bounds the cost)"),
-            Parameter::flag("skip_agreeing_taps", skipAgreeing_,
-                            "skip search and filter where depth bounds of the receiver's tile show no blocker (same pixels)")};
-}
-
-void PercentageCloserSoftShadows::renderMaps(const ShadowFrame& frame) {
-    maps_.render(frame);
-    if (skipAgreeing_) tileBounds_.update(maps_);
-    else tileBounds_.forget();
+            skipAgreeingParameter("skip search and filter where depth bounds of the receiver's tile show how they end")};
 }
 
 void PercentageCloserSoftShadows::bindLookup(const gl::Program& lighting) const {
     maps_.bind(/*rawDepth=*/true);
-    tileBounds_.bind();
-    lighting.set("uSkipAgreeing", skipAgreeing_ ? 1 : 0);
+    bindTileBounds(lighting);
     lighting.set("uBlockerSamples", blockerSamples_);
     lighting.set("uFilterTaps", filterTaps_);
     lighting.set("uLightSizeDefault", lightSize_);
