@@ -16,20 +16,22 @@ int tilesOver(int texels, int level) { return (texels + tileSide(level) - 1) / t
 int border(int level) { return tileSide(level) - 6; }  // 2, 10, 26, ...: depth_tiles.glsl
 }  // namespace
 
-void DepthTileBounds::ensure(int tilesAcross) {
-    if (tilesAcross == tilesAcross_ && layers_.size() == gpu::kMaxShadow2D) return;
-    if (tilesAcross != tilesAcross_) {
+void DepthTileBounds::ensure(int tilesAcross, int layers) {
+    if (tilesAcross == tilesAcross_ && layers == static_cast<int>(layers_.size())) return;
+    if (tilesAcross != tilesAcross_ || layers != layerCount_) {
+        // Layers only for the slots in use: a 16384^2 sun alone needs 2048^2 tiles, 85 MiB, not 4 x that.
         levels_ = 1 + std::countr_zero(static_cast<unsigned>(tilesAcross));
-        bounds_ = gl::Texture::create2DArray(GL_RGBA32F, tilesAcross, tilesAcross, gpu::kMaxShadow2D, levels_);
+        bounds_ = gl::Texture::create2DArray(GL_RGBA32F, tilesAcross, tilesAcross, layers, levels_);
         bounds_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
         // Bounds that never agree until a layer is made (and no undefined texels in a readback).
         const float never[4] = {-4.0f, 0.0f, 0.0f, 1.0f};
         for (int level = 0; level < levels_; ++level) glClearTexImage(bounds_.id(), level, GL_RGBA, GL_FLOAT, never);
         tilesAcross_ = tilesAcross;
+        layerCount_ = layers;
     }
     layers_.clear();  // every layer is made again
-    layers_.resize(gpu::kMaxShadow2D);
-    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot)
+    layers_.resize(static_cast<std::size_t>(layers));
+    for (int slot = 0; slot < layers; ++slot)
         for (int level = 0; level < levels_; ++level) {
             Layer& layer = layers_[static_cast<std::size_t>(slot)];
             layer.levelTargets.push_back(gl::Framebuffer::colourOnly(bounds_, slot, "depth tile bounds", level));
@@ -39,16 +41,20 @@ void DepthTileBounds::ensure(int tilesAcross) {
 
 void DepthTileBounds::update(const DepthAndTintMaps& maps) {
     const ShadowSlots& slots = maps.slots();
-    int widest = 0;
+    int widest = 0, layers = 0;
     for (std::size_t i = 0; i < slots.size(); ++i)
-        if (slots.shadowed(i) && !slots.cube[i]) widest = std::max(widest, maps.maps(i).resolution);
+        if (slots.shadowed(i) && !slots.cube[i]) {
+            widest = std::max(widest, maps.maps(i).resolution);
+            layers = std::max(layers, slots.slot[i] + 1);
+        }
     if (widest == 0) return;
     if (!tiles_.id()) {
         tiles_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/glsl/depth_tiles.frag"});
         merge_ = gl::Program::build(
             {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/glsl/depth_tiles_merge.frag"});
     }
-    ensure(std::max(static_cast<int>(std::bit_ceil(static_cast<unsigned>(tilesOver(widest, 0)))), tilesAcross_));
+    ensure(std::max(static_cast<int>(std::bit_ceil(static_cast<unsigned>(tilesOver(widest, 0)))), tilesAcross_),
+           std::max(layers, layerCount_));
     gl::DebugGroup group("depth tile bounds");
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     fullscreenVao_.bind();

@@ -15,7 +15,7 @@
 // as soon as no lane of its 8-pixel group is left in it (gallivm's lp_exec_endloop), so a kernel
 // loop that breaks first thing where the answer is known costs one tap there.
 //
-// One mipmapped RGBA32F 2D array (mip level k = tile level k), a layer per 2D shadow slot, on
+// One mipmapped RGBA32F 2D array (mip level k = tile level k), a layer per 2D shadow slot in use, on
 // gpu::kUnitDepthTiles; each layer made again only where its map's depth changed (DerivedTexels).
 // Cube maps have none.
 #include "gl/Framebuffer.h"
@@ -47,11 +47,12 @@ private:
         std::vector<gl::Framebuffer> levelTargets;
         std::vector<gl::Texture> levelViews;  // each level alone: the next one's input, no feedback loop
     };
-    void ensure(int tilesAcross);
+    void ensure(int tilesAcross, int layers);
     void updateLayer(Layer& layer, const gl::Texture& depth, const TexelRect& changed);
 
     gl::Texture bounds_;
     int tilesAcross_ = 0;  // at level 0, a power of two
+    int layerCount_ = 0;   // 2D slots 0 .. layerCount_ - 1 (never fewer than once needed)
     int levels_ = 0;
     std::vector<Layer> layers_;
     gl::Program tiles_, merge_;
