@@ -53,9 +53,12 @@ GPU_CONST kUnitOpaqueDepth = 31;    // the opaque surfaces' depth
 GPU_CONST kLightingUnits = 32;      // units the lighting shader may read (all unbound before shadow passes)
 
 // DepthTileBounds: level-0 tiles of kDepthTile^2 texels, each bounding its texels and
-// kDepthTileBorder more on every side; level k: tiles of kDepthTile << k, border 8 * 2^k - 6.
+// kDepthTileBorder more on every side; level k: tiles of kDepthTile << k, each bounding one
+// level-(k-1) tile and its border more, so the border is (kDepthTile << k) - kDepthTileInset
+// (2, 10, 26, ...).
 GPU_CONST kDepthTile = 8;
 GPU_CONST kDepthTileBorder = 2;
+GPU_CONST kDepthTileInset = kDepthTile - kDepthTileBorder;
 
 GPU_CONST kLightBlockBinding = 0;
 

@@ -53,7 +53,7 @@ TEST(DepthTileBounds, EveryLevelBoundsEveryTexelOfItsTileAndBorder) {
     for (int level = 0; gpu::kDepthTile << level <= res; ++level) {
         int size = 0;
         const std::vector<float> bounds = readLevel(boundsView.texture, level, GL_RGBA, 4, layers, size);
-        const int side = gpu::kDepthTile << level, border = side - 6, tiles = (res + side - 1) / side;
+        const int side = gpu::kDepthTile << level, border = side - gpu::kDepthTileInset, tiles = (res + side - 1) / side;
         ASSERT_GE(size, tiles);
         int valid = 0;
         for (int ty = 0; ty < tiles; ++ty)

@@ -13,7 +13,7 @@ namespace penumbra::shadows {
 namespace {
 int tileSide(int level) { return gpu::kDepthTile << level; }
 int tilesOver(int texels, int level) { return (texels + tileSide(level) - 1) / tileSide(level); }
-int border(int level) { return tileSide(level) - 6; }  // 2, 10, 26, ...: depth_tiles.glsl
+int border(int level) { return tileSide(level) - gpu::kDepthTileInset; }
 }  // namespace
 
 void DepthTileBounds::ensure(int tilesAcross, int layers) {

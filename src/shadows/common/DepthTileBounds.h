@@ -1,8 +1,9 @@
 #pragma once
 // Bounds on a 2D shadow map's depth, tile by tile, at every scale: level k has tiles of
 // kDepthTile << k texels, each bounding its texels and a border around them (2 texels at level
-// 0; at level k, one level-(k-1) tile and its border more: 8 * 2^k - 6 texels) with a plane under
-// every depth there, d >= g . c + a (c the texel's centre relative to the tile's corner), and the
+// 0; at level k, one level-(k-1) tile and its border more: (8 << k) - kDepthTileInset texels)
+// with a plane under every depth there, d >= g . c + a (c the texel's centre relative to the
+// tile's corner), and the
 // farthest depth. From one fetch a lookup can tell that every tap of its kernel returns the same
 // (common/glsl/depth_tiles.glsl, tapsAgree): lit when the plane lies behind the highest reference
 // any tap can have, shadowed when the farthest depth lies in front of the lowest. A plane and not

@@ -17,9 +17,10 @@ bool tileAround(ShadowSite s, float reach, out float planeAtP, out vec2 g, out f
     g = vec2(0.0);
     farthest = 1.0;
     if (uSkipAgreeing == 0 || s.cube) return false;
-    // The finest level whose border (8 * 2^k - 6 texels) holds every texel a tap can land on.
-    int level = max(0, int(ceil(log2((reach + 1e-3 + 6.0) / float(kDepthTile)))));
-    if (float(kDepthTile << level) - 6.0 < reach + 1e-3) ++level;  // log2's rounding
+    // The finest level whose border ((kDepthTile << k) - kDepthTileInset texels) holds every texel
+    // a tap can land on.
+    int level = max(0, int(ceil(log2((reach + 1e-3 + float(kDepthTileInset)) / float(kDepthTile)))));
+    if (float((kDepthTile << level) - kDepthTileInset) < reach + 1e-3) ++level;  // log2's rounding
     if (level >= textureQueryLevels(uDepthTiles)) return false;
     float side = float(kDepthTile << level);
     vec2 p = s.coord.xy * s.resolution;

@@ -13,7 +13,7 @@ layout(location = 0) out vec4 outBounds;       // (a, g.x, g.y, farthest)
 
 void main() {
     ivec2 tile = ivec2(gl_FragCoord.xy);
-    float finerSide = float(kDepthTile << (uLevel - 1)), finerBorder = finerSide - 6.0;
+    float finerSide = float(kDepthTile << (uLevel - 1)), finerBorder = finerSide - float(kDepthTileInset);
     ivec2 first = 2 * tile - 1;
     if (any(lessThan(first, ivec2(0))) || any(greaterThan(first + 3, ivec2(uFinerTiles - 1)))) {
         outBounds = vec4(-4.0, 0.0, 0.0, 1.0);
