@@ -3,10 +3,10 @@
 // kDepthTile << k texels, each bounding its texels and a border around them (2 texels at level
 // 0; at level k, one level-(k-1) tile and its border more: (8 << k) - kDepthTileInset texels)
 // with a plane under every depth there, d >= g . c + a (c the texel's centre relative to the
-// tile's corner), and the
-// farthest depth. From one fetch a lookup can tell that every tap of its kernel returns the same
-// (common/glsl/depth_tiles.glsl, tapsAgree): lit when the plane lies behind the highest reference
-// any tap can have, shadowed when the farthest depth lies in front of the lowest. A plane and not
+// tile's corner), and the farthest depth. From one fetch a lookup can tell that every tap of
+// its kernel returns the same (common/glsl/depth_tiles.glsl, tapsAgree): lit when the plane lies
+// behind the highest reference any tap can have, shadowed when the farthest depth lies in front
+// of the lowest. A plane and not
 // just a minimum, because the receiver most often is the surface in the map: a tilted ground's
 // minimum over a tile lies in front of the ground at the receiver, and a min/max pyramid
 // (Dmitriev & Uralsky's hierarchical min-max map, GDC 2007) skipped almost nothing on the default
