@@ -1,5 +1,7 @@
 #include "scene/io/ModelImporter.h"
 
+#include "scene/io/FormatChecks.h"
+
 #include "util/Error.h"
 #include "util/Log.h"
 
@@ -380,68 +382,23 @@ private:
     int socket_ = -1;
 };
 
-void probeInHelperProcess(const fs::path& file) {
-    static ImportProbe probe;
-    probe.check(file);
-}
-
-// Assimp's PLY reader loops forever on a PLY cut short (a broken download, say): a header without
-// `end_header`, or binary data shorter than the header promises. The header says how many
-// vertices and faces follow; each needs at least its fixed-size properties (and a list's count),
-// so a file shorter than that is refused at once, before the probe would wait out its limit.
-void checkPlyIsWhole(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return;
-    const std::map<std::string, int> sizes = {{"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2},
-                                              {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4},
-                                              {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4},
-                                              {"double", 8}, {"float64", 8}};
-    bool binary = false;
-    double needed = 0, count = 0, perElement = 0;
-    while (std::getline(in, line)) {
-        std::istringstream words(line);
-        std::string word, type;
-        words >> word;
-        if (word == "format") {
-            words >> type;
-            binary = type.rfind("binary", 0) == 0;
-        } else if (word == "element") {
-            needed += count * perElement;
-            words >> type >> count;
-            if (!words || count < 0) return;  // Assimp reports malformed headers itself
-            perElement = 0;
-        } else if (word == "property") {
-            words >> type;
-            if (type == "list") words >> type;  // the count's type: at least one count per element
-            if (auto it = sizes.find(type); it != sizes.end()) perElement += it->second;
-        } else if (word == "end_header") {
-            needed += count * perElement;
-            if (!binary) return;
-            std::error_code ec;
-            const auto header = static_cast<double>(in.tellg());
-            const auto size = static_cast<double>(fs::file_size(file, ec));
-            if (!ec && header >= 0 && size - header < needed)
-                throw InputError(file, "truncated binary PLY: the header announces at least " +
-                                           std::to_string(static_cast<long long>(needed)) + " bytes of data, the file holds " +
-                                           std::to_string(static_cast<long long>(size - header)));
-            return;
-        }
-    }
-    throw InputError(file, "truncated PLY: the header has no 'end_header' line");
-}
-
 }  // namespace
 
 void setModelImportTimeout(int seconds) { importTimeoutSeconds = std::max(1, seconds); }
+
+void probeWithAssimp(const fs::path& file) {
+    static ImportProbe probe;
+    probe.check(file);
+}
 
 int importModel(const fs::path& file, Scene& scene) {
     std::error_code ec;
     if (!fs::exists(file, ec)) throw InputError(file, "model file not found");
     // A folder or a device (/dev/zero, a FIFO) would make the importer fail or read forever.
     if (!fs::is_regular_file(file, ec)) throw InputError(file, "model path is not a regular file");
-    checkPlyIsWhole(file);
-    probeInHelperProcess(file);
+    checkPly(file);  // files that break their format's rules never reach Assimp (FormatChecks.h)
+    checkGltf(file);
+    probeWithAssimp(file);
     Assimp::Importer importer;
     const aiScene* ai = readWithAssimp(importer, file);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode) {

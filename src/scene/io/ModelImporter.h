@@ -16,4 +16,8 @@ int importModel(const std::filesystem::path& file, Scene& scene);
 // How long the importer may take on one file before it is stopped (default 120 s).
 void setModelImportTimeout(int seconds);
 
+// Reads `file` with Assimp in the helper process (importModel's first step after the format
+// checks): throws InputError when Assimp crashes on it or overruns the timeout.
+void probeWithAssimp(const std::filesystem::path& file);
+
 }  // namespace penumbra::scene::io

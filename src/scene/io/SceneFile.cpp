@@ -4,6 +4,7 @@
 #include "scene/io/ModelImporter.h"
 #include "util/DataPaths.h"
 #include "util/Error.h"
+#include "util/InputFiles.h"
 
 #include <nlohmann/json.hpp>
 
@@ -475,9 +476,7 @@ Scene wrapModel(const fs::path& modelFile) {
 
 Scene loadScene(const fs::path& path) {
     if (!fs::exists(path)) throw InputError(path, "file not found");
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
-    if (ext != ".json") return wrapModel(path);
+    if (util::lowerExtension(path) != ".json") return wrapModel(path);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "cannot open scene file");
     std::stringstream ss;
