@@ -31,18 +31,21 @@ std::vector<NamedPart> splitParts(const std::uint8_t* data, std::size_t size, co
     return parts;
 }
 
-// This process's scratch folder, created on first use and removed when the process exits.
+// This process's scratch folder, created on first use and removed when the process exits. The
+// exit handler is registered once the path exists, so it runs before the path is destroyed
+// (registered inside the initialiser, it ran after: valgrind saw remove_all read freed memory).
 static const fs::path& scratchFolder() {
     static const fs::path folder = [] {
         const char* tmp = std::getenv("TMPDIR");
         fs::path f = fs::path(tmp && *tmp ? tmp : "/tmp") / ("penumbra-fuzz-" + std::to_string(::getpid()));
         fs::create_directories(f);
-        std::atexit([] {
-            std::error_code ec;
-            fs::remove_all(scratchFolder(), ec);
-        });
         return f;
     }();
+    static const bool removedAtExit = std::atexit([] {
+        std::error_code ec;
+        fs::remove_all(folder, ec);
+    }) == 0;
+    (void)removedAtExit;
     return folder;
 }
 

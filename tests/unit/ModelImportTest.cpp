@@ -197,6 +197,11 @@ TEST(ModelImport, FormatChecksNameTheBrokenRuleBeforeAssimpReadsIt) {
         {write("list.ply", binaryHead + le32(3) + le32(0) + le32(1)), "truncated binary PLY: the header announces 1 'face' elements"},
         {write("negative.ply", binaryHead + le32(0xffffffffu)), "has a list of negative length"},
         {write("notply.ply", "solid cube\n"), "notply.ply:1: not a PLY file"},
+        // Found by tests/fuzz: Assimp writes past its vertex array when "vertex" comes twice.
+        {write("twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float z\nelement vertex 1\nproperty float z\nend_header\n0\n0\n"),
+         "twice.ply:5: element 'vertex' is declared twice (first on line 3)"},
+        {write("xx.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float x\nend_header\n0 0\n"),
+         "xx.ply:5: property 'x' of element 'vertex' is declared twice"},
         {write("huge.gltf", "{" + triangle + "," + accessor + "," + view + R"(,"buffers":[{"byteLength":1000000000,"uri":"data:application/octet-stream;base64,AAAA"}]})"),
          "huge.gltf: buffers[0] declares 1000000000 bytes; its data holds 3"},
         {write("count.gltf", "{" + triangle + R"(,"accessors":[{"bufferView":0,"componentType":5126,"count":4000000,"type":"VEC3"}],)" + view + "," + data36 + "}"),

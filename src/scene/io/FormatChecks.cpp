@@ -57,6 +57,7 @@ const std::map<std::string_view, PlyType>& plyTypes() {
 }
 
 struct PlyProperty {
+    std::string name;
     PlyType item;
     bool list = false;
     PlyType count{};  // lists: the type of the length before the items
@@ -145,6 +146,10 @@ private:
             fail(number, "an element line must read 'element <name> <count>' with a count from 0 to 4294967295");
         e.name = std::string(w[1]);
         e.line = number;
+        // Assimp 5.2 writes past its vertex array when "vertex" comes twice (tests/fuzz, under
+        // valgrind); no real file repeats a name.
+        for (const PlyElement& other : h.elements)
+            if (other.name == e.name) fail(number, "element '" + e.name + "' is declared twice (first on line " + std::to_string(other.line) + ")");
         h.elements.push_back(std::move(e));
     }
 
@@ -166,6 +171,9 @@ private:
         } else {
             fail(number, "a property line must read 'property <type> <name>' or 'property list <type> <type> <name>'");
         }
+        p.name = std::string(w.back());
+        for (const PlyProperty& other : h.elements.back().properties)
+            if (other.name == p.name) fail(number, "property '" + p.name + "' of element '" + h.elements.back().name + "' is declared twice");
         h.elements.back().properties.push_back(p);
     }
 
