@@ -200,6 +200,10 @@ TEST(ModelImport, FormatChecksNameTheBrokenRuleBeforeAssimpReadsIt) {
         // Found by tests/fuzz: Assimp writes past its vertex array when "vertex" comes twice.
         {write("twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float z\nelement vertex 1\nproperty float z\nend_header\n0\n0\n"),
          "twice.ply:5: element 'vertex' is declared twice (first on line 3)"},
+        {write("vt.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\v\n0\n"),
+         "vt.ply:5: control character 0x0B in the PLY header (only spaces and tabs separate words)"},
+        {write("eof.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nend_header"),
+         "eof.ply:4: truncated PLY: 'end_header' must end with a line break"},
         {write("xx.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float x\nend_header\n0 0\n"),
          "xx.ply:5: property 'x' of element 'vertex' is declared twice"},
         {write("huge.gltf", "{" + triangle + "," + accessor + "," + view + R"(,"buffers":[{"byteLength":1000000000,"uri":"data:application/octet-stream;base64,AAAA"}]})"),

@@ -34,6 +34,12 @@ std::vector<std::string_view> words(std::string_view line) {
     return out;
 }
 
+std::string hexByte(char c) {
+    static const char* digits = "0123456789ABCDEF";
+    const auto b = static_cast<unsigned char>(c);
+    return std::string("0x") + digits[b >> 4] + digits[b & 15];
+}
+
 template <typename T>
 bool parseWhole(std::string_view s, T& value) {
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
@@ -110,11 +116,19 @@ private:
         if (!nextLine(pos, line) || line != "ply") fail(1, "not a PLY file: the first line must be 'ply'");
         while (nextLine(pos, line)) {
             ++number;
+            // Words are separated by spaces and tabs. Assimp 5.2 loops forever on an
+            // "end_header" followed by a vertical tab (tests/fuzz), so no other control
+            // character may stand in a header line.
+            for (const char c : line)
+                if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
+                    fail(number, "control character " + hexByte(c) + " in the PLY header (only spaces and tabs separate words)");
             const auto w = words(line);
             if (w.empty()) fail(number, "empty line in the PLY header");
             if (w[0] == "comment" || w[0] == "obj_info") continue;
             if (w[0] == "end_header") {
                 if (w.size() != 1) fail(number, "'end_header' takes nothing after it");
+                // Assimp 5.2 loops forever looking for the line's end (tests/fuzz).
+                if (data_[pos - 1] != '\n') fail(number, "truncated PLY: 'end_header' must end with a line break");
                 if (h.format == PlyHeader::Format::None) fail(number, "the PLY header has no 'format' line");
                 h.dataStart = pos;
                 h.dataLine = number + 1;
