@@ -24,6 +24,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     command.add_flag_callback(
         "--redraw-shadow-maps", [&options] { options.reuseStillCasters = false; },
         "redraw every shadow map every frame (default: keep what still casters drew while they and the light stay put)");
+    command.add_flag_callback(
+        "--whole-casters", [&options] { options.clusterCasters = false; },
+        "draw big meshes whole into every shadow map they reach (default: cull their clusters per cascade, layer and cube face)");
     command.add_option_function<std::vector<std::string>>(
         "--param",
         [&options](const std::vector<std::string>& texts) {

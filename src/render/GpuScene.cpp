@@ -18,10 +18,11 @@ gl::Texture uploadImage(const scene::Image& img, float anisotropy) {
     return t;
 }
 
-GpuScene::GpuScene(const scene::Scene& scene, float anisotropy) : scene_(scene) {
+GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) : scene_(scene) {
     for (const auto& mesh : scene.meshes) {
+        ClusteredIndices clustered = clusters ? clusterMesh(mesh) : ClusteredIndices{mesh.indices, std::vector<std::vector<MeshCluster>>(mesh.parts.size())};
         GpuMesh g{gl::Buffer(std::span<const scene::Vertex>(mesh.vertices)),
-                  gl::Buffer(std::span<const std::uint32_t>(mesh.indices)), gl::VertexArray()};
+                  gl::Buffer(std::span<const std::uint32_t>(clustered.indices)), gl::VertexArray(), std::move(clustered.clusters)};
         glVertexArrayVertexBuffer(g.vao.id(), 0, g.vertices.id(), 0, sizeof(scene::Vertex));
         glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
         g.vao.attribute(0, 0, 3, offsetof(scene::Vertex, position));
@@ -90,6 +91,20 @@ void GpuScene::drawTrianglesSorted(const Draw& d, const gl::Program& program, co
 void GpuScene::draw(const Draw& d, const gl::Program& program) const {
     const scene::MeshPart& part = scene_.meshes[d.mesh].parts[d.part];
     draw(d, program, part.firstIndex, static_cast<GLsizei>(part.indexCount));
+}
+
+std::size_t GpuScene::drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const {
+    const std::vector<MeshCluster>& clusters = meshes_[d.mesh].clusters[d.part];
+    if (clusters.empty()) {
+        draw(d, program);
+        return d.triangles;
+    }
+    std::size_t triangles = 0;
+    for (const IndexRange& r : visibleRanges(clusters, viewProj * d.model)) {
+        draw(d, program, r.firstIndex, static_cast<GLsizei>(r.indexCount));
+        triangles += r.indexCount / 3;
+    }
+    return triangles;
 }
 
 void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const {

@@ -4,6 +4,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/MeshClusters.h"
 #include "scene/Scene.h"
 
 #include <vector>
@@ -28,13 +29,17 @@ struct Draw {
 class GpuScene {
 public:
     // `anisotropy`: the most anisotropic filtering of the scene's textures (1 = trilinear only).
-    explicit GpuScene(const scene::Scene& scene, float anisotropy = 1.0f);
+    // `clusters`: cut big parts into clusters for drawInside (MeshClusters.h).
+    explicit GpuScene(const scene::Scene& scene, float anisotropy = 1.0f, bool clusters = true);
     void setAnisotropy(float anisotropy);
 
     // All parts of all objects at `time`; translucent ones sorted back to front from `eye`.
     std::vector<Draw> draws(float time, const glm::vec3& eye) const;
     // Sets uModel and material uniforms on `program`, binds the texture, issues the draw.
     void draw(const Draw& d, const gl::Program& program) const;
+    // The same, skipping the part's clusters (MeshClusters.h) outside the clip volume of
+    // `viewProj`; returns the triangles drawn.
+    std::size_t drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const;
     // The same, with the part's triangles sorted back to front from `eye` (painter's by triangle).
     void drawTrianglesSorted(const Draw& d, const gl::Program& program, const glm::vec3& eye) const;
     const gl::Texture& image(int index) const { return images_[static_cast<std::size_t>(index)]; }
@@ -44,6 +49,7 @@ private:
     struct GpuMesh {
         gl::Buffer vertices, indices;
         gl::VertexArray vao;
+        std::vector<std::vector<MeshCluster>> clusters;  // per part; empty for parts drawn whole
     };
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;

@@ -15,21 +15,6 @@ namespace penumbra::render {
 
 // True when the box lies wholly outside one of the six planes of `viewProj`'s clip volume
 // (-w <= x, y, z <= w): conservative, so a caster that may reach the volume is kept.
-static bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& viewProj) {
-    if (box.empty()) return true;
-    glm::vec4 corners[8];
-    for (int i = 0; i < 8; ++i)
-        corners[i] = viewProj * glm::vec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                                          (i & 4) ? box.max.z : box.min.z, 1.0f);
-    for (int axis = 0; axis < 3; ++axis)
-        for (float side : {-1.0f, 1.0f}) {
-            bool allOutside = true;
-            for (const glm::vec4& c : corners) allOutside = allOutside && side * c[axis] > c.w;
-            if (allOutside) return true;
-        }
-    return false;
-}
-
 std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene) {
     if (!options.technique.empty()) return options.technique;
     return scene.technique.empty() ? "hard" : scene.technique;
@@ -68,7 +53,7 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
 }
 
 Renderer::Renderer(scene::Scene& scene, RenderOptions options)
-    : scene_(scene), options_(std::move(options)), gpu_(scene, static_cast<float>(options_.anisotropy)), lightBlock_(sizeof(gpu::LightBlock), nullptr) {
+    : scene_(scene), options_(std::move(options)), gpu_(scene, static_cast<float>(options_.anisotropy), options_.clusterCasters), lightBlock_(sizeof(gpu::LightBlock), nullptr) {
     if (scene_.lights.size() > static_cast<std::size_t>(gpu::kMaxLights))
         throw std::invalid_argument("the scene has " + std::to_string(scene_.lights.size()) + " lights; at most " +
                                     std::to_string(gpu::kMaxLights) + " are supported");
@@ -213,9 +198,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
-                gpu_.draw(d, programs.of(*d.material));
+                const std::size_t drawn = selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
+                                                         : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
-                    shadowTriangles_[static_cast<std::size_t>(selection.light)] += d.triangles;
+                    shadowTriangles_[static_cast<std::size_t>(selection.light)] += drawn;
             }
         };
         frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {

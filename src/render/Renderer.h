@@ -55,6 +55,10 @@ struct RenderOptions {
     // map and those casters stay put, and redraw only what moves (shadows::ShadowFrame). false
     // redraws every map every frame: the bare per-frame cost, for peer comparisons.
     bool reuseStillCasters = true;
+    // Cut mesh parts of 32768 triangles or more into clusters that each shadow pass culls against
+    // its cascade, layer or cube face (render/MeshClusters.h). false draws such parts whole: the
+    // same maps, for measuring what the clusters save. Read when the Renderer is made.
+    bool clusterCasters = true;
     // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
     // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
     bool requireRegions = false;

@@ -3,6 +3,7 @@
 #include "GlTestSupport.h"
 
 #include "render/Offscreen.h"
+#include "scene/Shapes.h"
 
 namespace penumbra::test {
 namespace {
@@ -133,6 +134,54 @@ TEST(Culling, ViewDependentMapsDrawTheSunsCastersOncePerLayer) {
     const std::size_t cascaded = sunTriangles("cascaded", false);
     EXPECT_GE(cascaded, opaqueTriangles) << "every caster reaches the first cascade";
     EXPECT_LE(cascaded, 4 * opaqueTriangles) << "at most once per cascade, and no plain map";
+}
+
+// A sphere of 65k triangles (one mesh part, so object culling takes it or leaves it whole) next
+// to a point light and under a low sun seen by a camera looking along the ground. Clusters let a
+// cube face or cascade skip the sphere's far side; the pictures must stay exactly as with the
+// sphere drawn whole, and fewer triangles must be drawn.
+TEST(Culling, ClustersOfABigMeshCullPerCubeFaceAndCascadeWithTheSamePixels) {
+    struct Case {
+        const char* technique;
+        const char* light;
+        const char* camera;
+        float radius;
+    };
+    const char* lamp = R"({ "type": "point", "position": [1.4, 0.6, 0.3], "range": 30, "shadow": { "resolution": 256 } })";
+    const char* sun = R"({ "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } })";
+    const char* near = R"({ "position": [4, 1.5, 4], "target": [0, 0.5, 0], "near": 0.1, "far": 60 })";
+    // The first cascade (0.1 to 4.1 from the camera) takes in the near side of a sphere of radius 4.
+    const char* close = R"({ "position": [5, 2, 5], "target": [0, 2, 0], "near": 0.1, "far": 60 })";
+    for (const Case c : {Case{"hard", lamp, near, 1.0f}, Case{"pcf-poisson16", lamp, near, 1.0f}, Case{"cascaded", sun, close, 4.0f}}) {
+        scene::Scene s = sceneFromJson(R"({ "camera": )" + std::string(c.camera) + R"(, "lights": [ )" + c.light + R"( ],
+          "objects": [ { "shape": "plane", "size": [60, 60] }, { "shape": "sphere", "position": [0, )" + std::to_string(c.radius) + R"(, 0] } ] })");
+        scene::Mesh& ball = s.meshes[static_cast<std::size_t>(s.objects[1].mesh)];
+        const int material = ball.parts[0].material;
+        ball = scene::shapes::sphere(c.radius, 256, 128);
+        ball.parts[0].material = material;
+        ASSERT_GE(ball.triangleCount(), render::kClusteredPartTriangles);
+        auto renderWith = [&](bool clusters, std::size_t& triangles) {
+            render::RenderOptions options;
+            options.technique = c.technique;
+            options.output = OutputMode::Visibility;
+            options.clusterCasters = clusters;
+            render::Renderer renderer(s, options);
+            render::OffscreenTarget target(96, 96);
+            renderer.render(0.0f, s.camera, 96, 96, target.framebuffer());
+            triangles = renderer.shadowTriangles().at(0);
+            return renderer.readLinear();
+        };
+        std::size_t clustered = 0, whole = 0;
+        const std::vector<float> withClusters = renderWith(true, clustered), drawnWhole = renderWith(false, whole);
+        EXPECT_EQ(withClusters, drawnWhole) << c.technique << ": the clusters changed the picture";
+        EXPECT_LT(clustered, whole) << c.technique << ": no cluster was culled";
+        EXPECT_GE(clustered, ball.triangleCount() / 2) << c.technique << ": at least the half facing the light is drawn";
+        const Frame f{96, 96, withClusters};
+        int shadowed = 0;
+        for (int y = 0; y < 96; ++y)
+            for (int x = 0; x < 96; ++x) shadowed += f.at(x, y).r < 0.5f;
+        EXPECT_GT(shadowed, 96 * 96 / 50) << c.technique << ": the sphere casts a shadow";
+    }
 }
 
 }  // namespace

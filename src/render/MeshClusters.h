@@ -1,0 +1,48 @@
+#pragma once
+// Large mesh parts cut into spatially compact clusters, so that a shadow pass can skip the parts
+// of a big caster that lie outside a cascade, a LiSPSM layer or a cube face (issue 15: "split big
+// meshes into clusters so culling can bite"). Object culling alone drew all 871k triangles of the
+// dragon into every cascade.
+//
+// The part's triangles are reordered by median splits of their centroids (only in the GPU's index
+// buffer: the scene keeps its own order) into runs of at most kClusterTriangles, each with its
+// bounding box. A run outside a pass's clip volume produces no fragment there, so skipping it
+// leaves the map bit for bit as drawing it would.
+#include "scene/Mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace penumbra::render {
+
+struct MeshCluster {
+    std::uint32_t firstIndex = 0;  // into the reordered index buffer
+    std::uint32_t indexCount = 0;
+    scene::Bounds bounds;          // mesh space
+};
+
+// Parts with fewer triangles stay whole: culling the object already covers them, and a draw per
+// cluster would cost more than it saves.
+inline constexpr std::uint32_t kClusteredPartTriangles = 32768;
+inline constexpr std::uint32_t kClusterTriangles = 4096;
+
+struct ClusteredIndices {
+    std::vector<std::uint32_t> indices;             // the mesh's indices, large parts reordered
+    std::vector<std::vector<MeshCluster>> clusters;  // per part; empty for parts left whole
+};
+
+ClusteredIndices clusterMesh(const scene::Mesh& mesh);
+
+// True when the box, taken through `clipFromBox`, lies wholly outside one plane of the clip volume.
+bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox);
+
+// The index ranges of the clusters inside the clip volume, neighbours merged into one range.
+struct IndexRange {
+    std::uint32_t firstIndex;
+    std::uint32_t indexCount;
+};
+std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh);
+
+}  // namespace penumbra::render

@@ -1,0 +1,111 @@
+// MeshClusters: a big part's triangles are reordered into spatially compact clusters; culling
+// them against a clip volume must keep every triangle that reaches the volume.
+#include "render/MeshClusters.h"
+#include "scene/Shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace penumbra::render {
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+std::vector<Triangle> triangles(const std::vector<std::uint32_t>& indices, std::uint32_t first, std::uint32_t count) {
+    std::vector<Triangle> out;
+    for (std::uint32_t i = first; i < first + count; i += 3) out.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    return out;
+}
+
+scene::Mesh bigSphere() {
+    scene::Mesh m = scene::shapes::sphere(1.0f, 256, 128);
+    EXPECT_GE(m.triangleCount(), kClusteredPartTriangles);
+    return m;
+}
+
+TEST(MeshClusters, ABigPartKeepsItsTrianglesInClustersThatBoundThem) {
+    const scene::Mesh mesh = bigSphere();
+    const ClusteredIndices c = clusterMesh(mesh);
+    ASSERT_EQ(c.clusters.size(), 1u);
+    const std::vector<MeshCluster>& clusters = c.clusters[0];
+    EXPECT_GE(clusters.size(), (mesh.triangleCount() + kClusterTriangles - 1) / kClusterTriangles);
+    EXPECT_LE(clusters.size(), 2 * mesh.triangleCount() / kClusterTriangles);
+    // The same triangles, corners in the same winding, in another order.
+    auto before = triangles(mesh.indices, 0, static_cast<std::uint32_t>(mesh.indices.size()));
+    auto after = triangles(c.indices, 0, static_cast<std::uint32_t>(c.indices.size()));
+    std::sort(before.begin(), before.end());
+    std::sort(after.begin(), after.end());
+    EXPECT_EQ(before, after);
+    // Clusters follow each other and bound their triangles; they are compact: on a unit sphere a
+    // cluster of 4096 of 65k triangles spans far less than the sphere.
+    std::uint32_t next = 0;
+    for (const MeshCluster& cl : clusters) {
+        EXPECT_EQ(cl.firstIndex, next);
+        next += cl.indexCount;
+        for (const Triangle& t : triangles(c.indices, cl.firstIndex, cl.indexCount))
+            for (std::uint32_t v : t) {
+                const glm::vec3 p = mesh.vertices[v].position;
+                EXPECT_TRUE(glm::all(glm::greaterThanEqual(p, cl.bounds.min)) && glm::all(glm::lessThanEqual(p, cl.bounds.max)));
+            }
+        EXPECT_LT(glm::length(cl.bounds.extent()), 1.8f) << "cluster at " << cl.firstIndex << " is not compact";
+    }
+    EXPECT_EQ(next, mesh.indices.size());
+}
+
+TEST(MeshClusters, SmallPartsStayWholeAndInOrder) {
+    const scene::Mesh mesh = scene::shapes::sphere(1.0f, 48, 24);
+    const ClusteredIndices c = clusterMesh(mesh);
+    EXPECT_EQ(c.indices, mesh.indices);
+    ASSERT_EQ(c.clusters.size(), 1u);
+    EXPECT_TRUE(c.clusters[0].empty());
+}
+
+// Every triangle with a corner inside the clip volume lies in a kept range; the ranges are merged
+// and leave out clusters wholly outside.
+TEST(MeshClusters, CullingKeepsEveryTriangleThatReachesTheVolume) {
+    const scene::Mesh mesh = bigSphere();
+    const ClusteredIndices c = clusterMesh(mesh);
+    // A narrow orthographic box looking down -z at the sphere's +x side.
+    const glm::mat4 clip = glm::ortho(0.4f, 1.2f, -0.3f, 0.3f, -5.0f, 5.0f);
+    const std::vector<IndexRange> ranges = visibleRanges(c.clusters[0], clip);
+    ASSERT_FALSE(ranges.empty());
+    std::vector<bool> kept(c.indices.size() / 3, false);
+    std::uint32_t keptTriangles = 0;
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+        if (i > 0) EXPECT_GT(ranges[i].firstIndex, ranges[i - 1].firstIndex + ranges[i - 1].indexCount) << "neighbours not merged";
+        for (std::uint32_t t = ranges[i].firstIndex / 3; t < (ranges[i].firstIndex + ranges[i].indexCount) / 3; ++t) kept[t] = true;
+        keptTriangles += ranges[i].indexCount / 3;
+    }
+    EXPECT_LT(keptTriangles, mesh.triangleCount() / 2) << "the box sees a small part of the sphere";
+    int reaching = 0;
+    for (std::size_t t = 0; t < kept.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec4 p = clip * glm::vec4(mesh.vertices[c.indices[3 * t + static_cast<std::size_t>(k)]].position, 1.0f);
+            if (glm::all(glm::lessThanEqual(glm::abs(glm::vec3(p)), glm::vec3(p.w)))) {
+                ++reaching;
+                EXPECT_TRUE(kept[t]) << "triangle " << t << " reaches the volume but was culled";
+            }
+        }
+    EXPECT_GT(reaching, 0);
+}
+
+TEST(MeshClusters, ABoxWhollyOutsideOnePlaneIsOutside) {
+    const glm::mat4 clip = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f);
+    scene::Bounds inside, straddling, beside;
+    inside.add(glm::vec3(-0.5f));
+    inside.add(glm::vec3(0.5f));
+    straddling.add(glm::vec3(0.5f, 0.0f, 0.0f));
+    straddling.add(glm::vec3(3.0f, 0.2f, 0.2f));
+    beside.add(glm::vec3(1.5f, 0.0f, 0.0f));
+    beside.add(glm::vec3(3.0f, 0.2f, 0.2f));
+    EXPECT_FALSE(outsideClipVolume(inside, clip));
+    EXPECT_FALSE(outsideClipVolume(straddling, clip));
+    EXPECT_TRUE(outsideClipVolume(beside, clip));
+    EXPECT_TRUE(outsideClipVolume(scene::Bounds{}, clip)) << "an empty box";
+}
+
+}  // namespace
+}  // namespace penumbra::render
