@@ -124,4 +124,13 @@ void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t fir
                    reinterpret_cast<const void*>(static_cast<std::uintptr_t>(firstIndex) * sizeof(std::uint32_t)));
 }
 
+void GpuScene::addSurfaceBounds(const Draw& d, std::vector<scene::Bounds>& out) const {
+    const auto& clusters = meshes_[d.mesh].clusters;
+    if (d.part >= clusters.size() || clusters[d.part].empty()) {
+        out.push_back(d.worldBounds);
+        return;
+    }
+    for (const MeshCluster& c : clusters[d.part]) out.push_back(c.bounds.transformed(d.model));
+}
+
 }  // namespace penumbra::render

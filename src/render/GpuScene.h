@@ -43,6 +43,8 @@ public:
     // The same, with the part's triangles sorted back to front from `eye` (painter's by triangle).
     void drawTrianglesSorted(const Draw& d, const gl::Program& program, const glm::vec3& eye) const;
     const gl::Texture& image(int index) const { return images_[static_cast<std::size_t>(index)]; }
+    // World boxes around the part's surface: one per cluster of a clustered part, else its bounds.
+    void addSurfaceBounds(const Draw& d, std::vector<scene::Bounds>& out) const;
 
 private:
     void draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const;

@@ -175,6 +175,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.camera = &camera;
         frame.aspect = aspect;
         frame.sceneBounds = bounds;
+        for (const Draw& d : draws) gpu_.addSurfaceBounds(d, frame.surfaceBounds);
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const auto selected = [](const Draw& d, const shadows::CasterSelection& selection) {
             using shadows::Motion;

@@ -111,7 +111,8 @@ INSTANTIATE_TEST_SUITE_P(TintMaps, MovingPane, ::testing::Values("hard", "cssm2"
 // is drawn only when a translucent caster needs it as the tint pass's depth test.
 TEST(Culling, ViewDependentMapsDrawTheSunsCastersOncePerLayer) {
     const std::string opaque = R"({ "shape": "plane", "size": [12, 12] }, { "shape": "box", "position": [0, 0.5, 0] })";
-    const std::string pane = R"(, { "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, 0], "rotation_deg": [90, 0, 0],
+    // Far from the box (in the sun's view too): the plain map, cropped to the pane, draws only the ground.
+    const std::string pane = R"(, { "shape": "plane", "size": [1, 1], "position": [4, 1.5, 0], "rotation_deg": [90, 0, 0],
                                     "material": { "transmission": [0.1, 0.9, 0.1] } })";
     auto sunTriangles = [&](const std::string& technique, bool withPane) {
         scene::Scene s = sceneFromJson(R"({
@@ -125,15 +126,45 @@ TEST(Culling, ViewDependentMapsDrawTheSunsCastersOncePerLayer) {
         renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
         return renderer.shadowTriangles().at(0);
     };
-    const std::size_t opaqueTriangles = 2 + 12, paneTriangles = 2;
+    const std::size_t groundTriangles = 2, opaqueTriangles = groundTriangles + 12, paneTriangles = 2;
     for (const char* technique : {"lispsm", "psm"}) {
         EXPECT_EQ(sunTriangles(technique, false), opaqueTriangles) << technique << ": one layer, nothing else";
-        EXPECT_EQ(sunTriangles(technique, true), 2 * opaqueTriangles + paneTriangles)
-            << technique << ": the warped layer, the plain depth map and the pane's tint";
+        EXPECT_EQ(sunTriangles(technique, true), opaqueTriangles + groundTriangles + paneTriangles)
+            << technique << ": the warped layer, the ground under the pane in the plain depth map, and the pane's tint";
     }
     const std::size_t cascaded = sunTriangles("cascaded", false);
     EXPECT_GE(cascaded, opaqueTriangles) << "every caster reaches the first cascade";
     EXPECT_LE(cascaded, 4 * opaqueTriangles) << "at most once per cascade, and no plain map";
+}
+
+// The view-dependent techniques draw the sun's plain depth only under translucent casters, as the
+// tint pass's depth test. It must still hold there what hard's full map holds: red glass above an
+// opaque tile above green glass, all over the ground. The tile's top gets the red pane alone (the
+// green one lies behind the tile's depth); the ground beside the tile's shadow gets both.
+TEST(Culling, TheTintsDepthTestUnderViewDependentMapsKeepsTheCastersUnderTheGlass) {
+    const std::string json = R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "lights": [ { "type": "directional", "direction": [0.1, -1, 0.05], "shadow": { "resolution": 1024 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "plane", "size": [3, 3], "position": [0, 3, 0], "material": { "alpha": 1, "transmission": [0.9, 0.1, 0.1] } },
+                   { "shape": "plane", "size": [1, 1], "position": [0, 2, 0] },
+                   { "shape": "plane", "size": [3, 3], "position": [0, 1, 0], "material": { "alpha": 1, "transmission": [0.1, 0.9, 0.1] } },
+                   { "shape": "box", "position": [8, 0.5, 8] } ] })";
+    const glm::vec3 red(0.9f, 0.1f, 0.1f), both = red * glm::vec3(0.1f, 0.9f, 0.1f);
+    auto mean = [](const Frame& f, int x0, int y0, int side) {
+        glm::vec3 sum(0.0f);
+        for (int y = y0; y < y0 + side; ++y)
+            for (int x = x0; x < x0 + side; ++x) sum += f.at(x, y);
+        return sum / float(side * side);
+    };
+    for (const char* technique : {"hard", "cascaded", "lispsm", "psm"}) {
+        scene::Scene s = sceneFromJson(json);
+        const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, technique);
+        const glm::vec3 tile = mean(f, 45, 45, 6), ground = mean(f, 59, 46, 4);  // the tile's middle; the ground at x ~ 1.2
+        EXPECT_LT(glm::length(tile - red), 0.02f) << technique << ": tile top (" << tile.r << ", " << tile.g << ", " << tile.b << ")";
+        EXPECT_LT(glm::length(ground - both), 0.02f)
+            << technique << ": ground under both panes (" << ground.r << ", " << ground.g << ", " << ground.b << ")";
+    }
 }
 
 // A sphere of 65k triangles (one mesh part, so object culling takes it or leaves it whole) next
@@ -181,6 +212,55 @@ TEST(Culling, ClustersOfABigMeshCullPerCubeFaceAndCascadeWithTheSamePixels) {
         for (int y = 0; y < 96; ++y)
             for (int x = 0; x < 96; ++x) shadowed += f.at(x, y).r < 0.5f;
         EXPECT_GT(shadowed, 96 * 96 / 50) << c.technique << ": the sphere casts a shadow";
+    }
+}
+
+// Cascades fitted to their receivers: a cascade is drawn only where its camera slice (blend band
+// included) meets the scene, casters culled and texels scissored to that. Posts stand from near
+// the camera to far away, under a low sun that throws their shadows across the slices, toward
+// the camera and away from it. The pictures must be exactly those of whole cascades, with fewer
+// triangles drawn.
+TEST(Culling, CascadesFittedToTheirReceiversKeepEveryPixel) {
+    struct Case {
+        const char* direction;
+        shadows::ParameterValues parameters;
+    };
+    const Case cases[] = {{"[0.3, -0.45, 1]", {}},
+                          {"[0.3, -0.45, -1]", {}},
+                          {"[-1, -0.6, 0.2]", {{"blend", "0.4"}}},
+                          {"[0.3, -0.45, 1]", {{"sdsm", "true"}, {"blend", "0"}}},
+                          {"[0.2, -0.5, -1]", {{"lambda", "0.3"}, {"cascades", "6"}}}};
+    for (const Case& c : cases) {
+        std::string posts;
+        for (const float z : {6.0f, 2.0f, -3.0f, -9.0f, -17.0f, -28.0f})
+            posts += R"(, { "shape": "box", "size": [0.6, 3, 0.6], "position": [)" + std::to_string(z * 0.2f) + ", 1.5, " +
+                     std::to_string(z) + "] }";
+        scene::Scene s = sceneFromJson(R"({
+          "camera": { "position": [0, 2.5, 11], "target": [0, 0.5, 0], "near": 0.1, "far": 80 },
+          "lights": [ { "type": "directional", "direction": )" + std::string(c.direction) + R"(, "shadow": { "resolution": 512 } } ],
+          "objects": [ { "shape": "plane", "size": [40, 80] })" + posts + " ] }");
+        auto renderWith = [&](bool fit, std::size_t& triangles) {
+            render::RenderOptions options;
+            options.technique = "cascaded";
+            options.output = OutputMode::Visibility;
+            options.parameters = c.parameters;
+            options.parameters.emplace_back("fit_receivers", fit ? "true" : "false");
+            render::Renderer renderer(s, options);
+            render::OffscreenTarget target(128, 72);
+            renderer.render(0.0f, s.camera, 128, 72, target.framebuffer());
+            triangles = renderer.shadowTriangles().at(0);
+            return renderer.readLinear();
+        };
+        std::size_t fitted = 0, whole = 0;
+        const std::vector<float> withFit = renderWith(true, fitted), wholeLayers = renderWith(false, whole);
+        EXPECT_EQ(withFit, wholeLayers) << c.direction << ": fitting the cascades to their receivers changed the picture";
+        EXPECT_LT(fitted, whole) << c.direction << ": nothing was culled";
+        const Frame f{128, 72, withFit};
+        int shadowed = 0;
+        for (int y = 0; y < 72; ++y)
+            for (int x = 0; x < 128; ++x) shadowed += f.at(x, y).r < 0.5f;
+        EXPECT_GT(shadowed, 128 * 72 / 50) << c.direction << ": the posts cast shadows";
+        std::printf("%s: %zu of %zu triangles, %d shadowed pixels\n", c.direction, fitted, whole, shadowed);
     }
 }
 

@@ -5,6 +5,7 @@
 #include "shadows/cascaded/CascadeFit.h"
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace penumbra::shadows {
@@ -111,6 +112,47 @@ TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
     std::printf("60 pan steps of 0.3 texel: the box moved %d times, resized %d times\n", moved, resized);
     EXPECT_LE(resized, 3);
     EXPECT_LT(moved, 30) << "the box must not follow every sub-texel step";
+}
+
+}  // namespace
+}  // namespace penumbra::shadows
+
+namespace penumbra::shadows {
+namespace {
+
+// frustumInsideBox spans exactly the part of the frustum inside the box: the frustum's corners
+// when the box holds it, the box's corners when the frustum holds the box, nothing when apart,
+// and for a slab through the frustum the slab's cut of it.
+TEST(Cascades, FrustumInsideBoxSpansTheirIntersection) {
+    const glm::mat4 frustum = glm::perspective(glm::radians(60.0f), 1.0f, 1.0f, 10.0f);  // looks down -z
+    auto span = [](const std::vector<glm::vec3>& points) {
+        scene::Bounds b;
+        for (const glm::vec3& p : points) b.add(p);
+        return b;
+    };
+    scene::Bounds huge{glm::vec3(-100.0f), glm::vec3(100.0f)};
+    const scene::Bounds all = span(frustumInsideBox(frustum, huge));
+    const float half = 10.0f * std::tan(glm::radians(30.0f));
+    EXPECT_NEAR(all.min.x, -half, 1e-3f);
+    EXPECT_NEAR(all.max.z, -1.0f, 1e-3f);
+    EXPECT_NEAR(all.min.z, -10.0f, 1e-3f);
+
+    scene::Bounds inner{glm::vec3(-0.5f, -0.5f, -5.0f), glm::vec3(0.5f, 0.5f, -4.0f)};
+    const scene::Bounds small = span(frustumInsideBox(frustum, inner));
+    EXPECT_NEAR(small.min.x, -0.5f, 1e-4f);
+    EXPECT_NEAR(small.max.z, -4.0f, 1e-4f);
+
+    EXPECT_TRUE(frustumInsideBox(frustum, scene::Bounds{glm::vec3(20.0f, 0.0f, -5.0f), glm::vec3(21.0f, 1.0f, -4.0f)}).empty());
+    EXPECT_TRUE(frustumInsideBox(frustum, scene::Bounds{glm::vec3(-1.0f), glm::vec3(1.0f, 1.0f, -0.5f)}).empty()) << "before the near plane";
+
+    // A slab y in [-0.1, 0.1] across the whole frustum: its cut spans the frustum's width at the far
+    // plane and no more height than the slab.
+    scene::Bounds slab{glm::vec3(-100.0f, -0.1f, -100.0f), glm::vec3(100.0f, 0.1f, 100.0f)};
+    const scene::Bounds cut = span(frustumInsideBox(frustum, slab));
+    EXPECT_NEAR(cut.min.x, -half, 1e-3f);
+    EXPECT_NEAR(cut.max.y, 0.1f, 1e-4f);
+    EXPECT_NEAR(cut.min.z, -10.0f, 1e-3f);
+    EXPECT_NEAR(cut.max.z, -1.0f, 1e-3f);
 }
 
 }  // namespace

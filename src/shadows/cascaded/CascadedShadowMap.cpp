@@ -19,7 +19,9 @@ std::vector<Parameter> CascadedShadowMap::declareParameters() {
             Parameter::flag("freeze", freeze_, "stop refitting, to fly away and look at the cascades"),
             Parameter::real("max_distance", maxDistance_, 0, 100000, "> 0: split no further than this (world units)"),
             Parameter::flag("sdsm", sdsm_, "split only the visible depth range, from a camera pre-pass (Lauritzen et al. 2011)"),
-            Parameter::flag("draw_frusta", drawFrusta_, "draw each cascade's camera slice and light box with the overlay")};
+            Parameter::flag("draw_frusta", drawFrusta_, "draw each cascade's camera slice and light box with the overlay"),
+            Parameter::flag("fit_receivers", fitReceivers_,
+                            "draw each cascade only where its camera slice meets the scene (casters culled, texels scissored)")};
 }
 
 void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
@@ -43,17 +45,40 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
         splits_ = cascadeSplits(near, far, count, lambda_);
         fitted_.clear();
         slices_.clear();
+        readSlices_.clear();
         for (int c = 0; c < count; ++c) {
-            const float a = splits_[static_cast<std::size_t>(c)], b = splits_[static_cast<std::size_t>(c) + 1];
+            const auto i = static_cast<std::size_t>(c);
+            const float a = splits_[i], b = splits_[i + 1];
+            const auto slice = [&](float n, float f) { return glm::perspective(glm::radians(cam.fovDeg), frame.aspect, n, f) * cam.view(); };
             fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_));
-            slices_.push_back(frustumCorners(glm::perspective(glm::radians(cam.fovDeg), frame.aspect, a, b) * cam.view()));
+            slices_.push_back(frustumCorners(slice(a, b)));
+            // The lookup blends cascade c - 1 into c over the last `blend` of slice c - 1.
+            readSlices_.push_back(slice(c > 0 ? a - blend_ * (a - splits_[i - 1]) : a, b));
         }
         cameraView_ = cam.view();
     }
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
-    cascades_.render(frame, sun, res, viewProj);
+    cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res));
+}
+
+// A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of
+// the scene: where the slice meets the boxes around them (ShadowFrame::surfaceBounds, a box per
+// cluster of big meshes), projected into the cascade, lies every texel a lookup reads, widened by
+// the normal offset and the comparison's texel. The far cascades of a small scene meet nothing
+// and cost no pass.
+std::vector<TexelRect> CascadedShadowMap::readTexels(const ShadowFrame& frame, const scene::Light& sun, int res) const {
+    std::vector<TexelRect> texels;
+    if (!fitReceivers_ || select_ != 0 || readSlices_.size() != fitted_.size()) return texels;
+    const int margin = 2 + static_cast<int>(std::ceil(std::abs(sun.shadow.normalOffset)));
+    for (std::size_t c = 0; c < fitted_.size(); ++c) {
+        TexelRect r(0);
+        for (const scene::Bounds& surface : frame.surfaceBounds)
+            r = unite(r, texelRect(frustumInsideBox(readSlices_[c], surface), fitted_[c].viewProj, res));
+        texels.push_back(grown(r, glm::ivec2(margin), res));
+    }
+    return texels;
 }
 
 void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {

@@ -21,6 +21,8 @@ public:
     std::vector<DebugView> debugViews() const override;
     std::vector<DebugLine> debugLines() const override;
     const std::vector<Cascade>& cascades() const { return fitted_; }
+    // Per cascade: the texels a lookup can read (fit_receivers), or none given (whole layers).
+    std::vector<TexelRect> readTexels(const ShadowFrame& frame, const scene::Light& sun, int resolution) const;
 
 protected:
     std::vector<Parameter> declareParameters() override;
@@ -28,12 +30,13 @@ protected:
 private:
     int count_ = 4, select_ = 0;  // select: 0 by depth, 1 by projection (the lookup's uCascadeSelect)
     float lambda_ = 0.75f, blend_ = 0.1f, maxDistance_ = 0;
-    bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true;
+    bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true, fitReceivers_ = true;
     int light_ = -1, fittedResolution_ = 0;
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;
     std::vector<Cascade> fitted_;
     std::vector<std::array<glm::vec3, 8>> slices_;  // camera frustum slice of each cascade, for the debug lines
+    std::vector<glm::mat4> readSlices_;  // per cascade: the camera slice whose pixels read it, blend band included
     DepthBounds depthBounds_;
     LayeredDepthMap cascades_;
     DepthAndTintMaps maps_;

@@ -86,14 +86,15 @@ void DepthAndTintMaps::ensureStill(LightMaps& m) {
 }
 
 void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std::size_t face, int light,
-                                    std::uint64_t stillKey, bool moving) {
+                                    const OpaqueRegion& region, std::uint64_t stillKey, bool moving) {
     const glm::mat4& vp = (*frame.lightSpaces)[static_cast<std::size_t>(light)].viewProj[face];
     const float farDepth = 1.0f;
+    const ScopedScissor scissor(region.texels, region.cropped);
     const auto drawInto = [&](const gl::Framebuffer& fb, Motion motion) {
         fb.bind();
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
         depthProgram_.set("uLightViewProj", vp);
-        frame.drawCasters(depthProgram_, {Casters::Opaque, vp, light, motion});
+        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion});
     };
     if (stillKey == 0) {  // nothing reused: every caster, every frame
         drawInto(m.depthFaces[face], Motion::Any);
@@ -112,7 +113,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     glCopyImageSubData(m.still.id(), target, 0, 0, 0, z, m.depth.id(), target, 0, 0, 0, z, m.resolution, m.resolution, 1);
     m.depthFaces[face].bind();
     depthProgram_.set("uLightViewProj", vp);
-    frame.drawCasters(depthProgram_, {Casters::Opaque, vp, light, Motion::Moving});
+    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving});
     m.depthHolds[face] = 0;
 }
 
@@ -160,12 +161,19 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const TexelRect translucentTexels = texelRect(frame.casterBounds(translucent), vp, ls.resolution);
             const TexelRect tinted = withTint_ ? translucentTexels : TexelRect(0);
             const bool anyTranslucent = !isEmpty(tinted);
+            // A light whose depth lives elsewhere needs this depth only as the tint pass's depth
+            // test, under the translucent casters: the opaque casters are culled to those texels
+            // and drawn scissored to them (the rest of the map is stale and never read).
+            const bool cropped = light == depthElsewhere && anyTranslucent;
+            const OpaqueRegion region{cropped ? cropTo(tinted, ls.resolution) * vp : vp,
+                                      cropped ? tinted : TexelRect(0, 0, ls.resolution, ls.resolution), cropped};
             const scene::Bounds movingBounds =
-                reuse ? frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}) : scene::Bounds{};
+                reuse ? frame.casterBounds({Casters::Opaque, region.cull, light, Motion::Moving}) : scene::Bounds{};
             const bool moving = !movingBounds.empty();
             const TexelRect movingTexels = texelRect(movingBounds, vp, ls.resolution);
             const std::uint64_t stillKey =
-                reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp, po).value() : 0;
+                reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, region.cull, light, Motion::Still}), region.cull, po).value()
+                      : 0;
             // Translucent casters are depth-tested against the opaque depth: what they draw depends on
             // it only where their texels are. An animated caster outside them leaves that depth the
             // still casters'; one over them changes it (and its key 0 then never matches, so the
@@ -186,7 +194,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             if (light == depthElsewhere && (!anyTranslucent || tintCurrent)) continue;
             {
                 const gl::ScopedPassState state(opaquePass);
-                renderOpaque(frame, m, face, light, stillKey, moving);
+                renderOpaque(frame, m, face, light, region, stillKey, moving);
             }
             if (tintCurrent) continue;
             m.tintHolds[face] = tintKey;

@@ -60,8 +60,9 @@ public:
     explicit DepthAndTintMaps(bool withTint = true);
     // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
     // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
-    // translucent casters need it as the depth test of the tint pass; otherwise the light costs
-    // no pass here (measured on the 975k-triangle grid: 965k triangles per frame saved).
+    // translucent casters need it as the depth test of the tint pass, and then only under them
+    // (culled and scissored to their texels); otherwise the light costs no pass here (measured on
+    // the 975k-triangle grid: 965k triangles per frame saved).
     void render(const ShadowFrame& frame, int depthElsewhere = -1);
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
@@ -78,10 +79,17 @@ public:
 private:
     void ensure(std::size_t light, int resolution, bool cube);
     void ensureStill(LightMaps& maps);
-    // Makes face `face` of light `light`'s depth map hold this frame's opaque casters, drawing as
-    // little as the digests allow; `stillKey` is their digest (0: do not reuse).
-    void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, std::uint64_t stillKey,
-                      bool moving);
+    // Where a face's opaque depth is needed: the clip space casters are culled against (the
+    // light's, or that cropped to `texels`) and, when `cropped`, the texels drawn and cleared.
+    struct OpaqueRegion {
+        glm::mat4 cull;
+        TexelRect texels;
+        bool cropped;
+    };
+    // Makes face `face` of light `light`'s depth map hold this frame's opaque casters in `region`,
+    // drawing as little as the digests allow; `stillKey` is their digest (0: do not reuse).
+    void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region,
+                      std::uint64_t stillKey, bool moving);
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;

@@ -10,7 +10,8 @@
 namespace penumbra::shadows {
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
-                             const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes) {
+                             const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes,
+                             const std::vector<TexelRect>& readTexels) {
     const int count = std::clamp(static_cast<int>(viewProj.size()), 1, kMaxLayers);
     if (res != resolution_ || count != layers_) {
         texture_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, count);
@@ -39,11 +40,17 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         const glm::vec4 clipPlane = l < clipPlanes.size() ? clipPlanes[l] : glm::vec4(0, 0, 0, 1);
         // A caster outside the layer's clip volume would be clipped whole (no depth clamp here):
         // culling it per object leaves the map unchanged.
-        const CasterSelection casters{Casters::Opaque, viewProj[l], frame.slots->sun};
+        const bool cropped = l < readTexels.size();
+        const TexelRect read = cropped ? readTexels[l] : TexelRect(0, 0, res, res);
+        const CasterSelection casters{Casters::Opaque, cropped && !isEmpty(read) ? cropTo(read, res) * viewProj[l] : viewProj[l],
+                                      frame.slots->sun};
         const std::uint64_t key =
-            reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset).value() : 0;
+            reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset, read).value()
+                  : 0;
         if (key != 0 && key == holds_[l]) continue;
         holds_[l] = key;
+        if (isEmpty(read)) continue;  // nothing reads this layer: its stale texels stay unread
+        const ScopedScissor scissor(read, cropped);
         layerTargets_[l].beginDepthPass(res, res);
         casters_.set("uLightViewProj", viewProj[l]);
         casters_.set("uClipPlane", clipPlane);

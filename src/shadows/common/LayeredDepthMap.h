@@ -11,6 +11,7 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "shadows/common/DepthCasterProgram.h"
+#include "shadows/common/MapRegion.h"
 #include "shadows/ShadowTechnique.h"
 
 #include <glm/glm.hpp>
@@ -23,9 +24,11 @@ public:
     static constexpr int kMaxLayers = 16;
 
     // Opaque casters of `frame` into layer i through viewProj[i]. clipPlanes (optional, world
-    // space, one per layer) keep only the half-space dot(plane, P) >= 0.
+    // space, one per layer) keep only the half-space dot(plane, P) >= 0. readTexels (optional,
+    // one per layer): the only texels of the layer any lookup reads; the casters are culled to
+    // them and drawn scissored to them (an empty one: the layer is not drawn at all).
     void render(const ShadowFrame& frame, const scene::Light& light, int resolution, const std::vector<glm::mat4>& viewProj,
-                const std::vector<glm::vec4>& clipPlanes = {});
+                const std::vector<glm::vec4>& clipPlanes = {}, const std::vector<TexelRect>& readTexels = {});
     void bind(unsigned unit) const { texture_.bind(unit); }
     bool empty() const { return texture_.id() == 0; }
     int layers() const { return layers_; }

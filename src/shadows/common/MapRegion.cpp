@@ -2,12 +2,11 @@
 
 namespace penumbra::shadows {
 
-TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution) {
-    if (bounds.empty()) return TexelRect(0);
+TexelRect texelRect(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution) {
+    if (points.empty()) return TexelRect(0);
     glm::vec2 lo(1e9f), hi(-1e9f);
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec4 c = viewProj * glm::vec4((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                                                 (i & 4) ? bounds.max.z : bounds.min.z, 1.0f);
+    for (const glm::vec3& p : points) {
+        const glm::vec4 c = viewProj * glm::vec4(p, 1.0f);
         if (c.w <= 1e-6f) return {0, 0, resolution, resolution};
         const glm::vec2 ndc = glm::vec2(c) / c.w;
         lo = glm::min(lo, ndc);
@@ -18,12 +17,41 @@ TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int 
     return glm::clamp(TexelRect(first.x, first.y, last.x, last.y), 0, resolution);
 }
 
-void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour) {
-    if (isEmpty(rect)) return;
+TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution) {
+    if (bounds.empty()) return TexelRect(0);
+    std::vector<glm::vec3> corners;
+    for (int i = 0; i < 8; ++i)
+        corners.emplace_back((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                             (i & 4) ? bounds.max.z : bounds.min.z);
+    return texelRect(corners, viewProj, resolution);
+}
+
+glm::mat4 cropTo(const TexelRect& rect, int resolution) {
+    // The rectangle's NDC span [a, b] per axis goes to [-1, 1]: x' = (2 x - (a + b) w) / (b - a).
+    const glm::vec2 a = glm::vec2(rect.x, rect.y) / float(resolution) * 2.0f - 1.0f;
+    const glm::vec2 b = glm::vec2(rect.z, rect.w) / float(resolution) * 2.0f - 1.0f;
+    glm::mat4 crop(1.0f);
+    crop[0][0] = 2.0f / (b.x - a.x);
+    crop[1][1] = 2.0f / (b.y - a.y);
+    crop[3][0] = -(a.x + b.x) / (b.x - a.x);
+    crop[3][1] = -(a.y + b.y) / (b.y - a.y);
+    return crop;
+}
+
+ScopedScissor::ScopedScissor(const TexelRect& rect, bool enable) : enabled_(enable) {
+    if (!enabled_) return;
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect.x, rect.y, rect.z - rect.x, rect.w - rect.y);
+}
+
+ScopedScissor::~ScopedScissor() {
+    if (enabled_) glDisable(GL_SCISSOR_TEST);
+}
+
+void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour) {
+    if (isEmpty(rect)) return;
+    const ScopedScissor scissor(rect);
     glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &colour.x);
-    glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace penumbra::shadows

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <vector>
 
 #include <epoxy/gl.h>
 
@@ -48,6 +49,8 @@ inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
 // texel of margin around them: the whole map when a corner lies behind a perspective light's
 // eye, where its projection would flip.
 TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution);
+// The same for any set of points (empty when there are none).
+TexelRect texelRect(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution);
 
 // Which texels of a map computed from one face of a depth map (moments, min/max depth tiles) must
 // be computed again this frame. All of them, unless `key` (the face's still casters' digest with
@@ -65,6 +68,22 @@ public:
 private:
     std::uint64_t holds_ = 0;
     TexelRect moving_{0};
+};
+
+// Clip space cut down to `rect` of a square map of `resolution`: cropTo(rect) * viewProj culls
+// what cannot reach those texels (the part of x and y in clip space; depth is left alone).
+glm::mat4 cropTo(const TexelRect& rect, int resolution);
+
+// Scissor test on `rect` for the scope's draws and clears (none when `enable` is false).
+class ScopedScissor {
+public:
+    explicit ScopedScissor(const TexelRect& rect, bool enable = true);
+    ~ScopedScissor();
+    ScopedScissor(const ScopedScissor&) = delete;
+    ScopedScissor& operator=(const ScopedScissor&) = delete;
+
+private:
+    bool enabled_;
 };
 
 // Clears colour attachment 0 of `framebuffer` to `colour` inside `rect` only (nothing if empty).
