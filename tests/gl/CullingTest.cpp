@@ -10,6 +10,17 @@ namespace {
 
 using render::OutputMode;
 
+// The visibility of light 0 in `s` rendered with `options`, and the triangles drawn into its maps.
+std::vector<float> visibilityAndTriangles(scene::Scene& s, render::RenderOptions options, int width, int height,
+                                          std::size_t& triangles) {
+    options.output = OutputMode::Visibility;
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(width, height);
+    renderer.render(0.0f, s.camera, width, height, target.framebuffer());
+    triangles = renderer.shadowTriangles().at(0);
+    return renderer.readLinear();
+}
+
 // The camera looks straight down at the ground around the origin; a tall post stands well
 // outside its view, between the low sun and the ground it sees, so its long shadow falls into
 // the view. Culled by the camera it would vanish; culled by the light it stays.
@@ -194,13 +205,8 @@ TEST(Culling, ClustersOfABigMeshCullPerCubeFaceAndCascadeWithTheSamePixels) {
         auto renderWith = [&](bool clusters, std::size_t& triangles) {
             render::RenderOptions options;
             options.technique = c.technique;
-            options.output = OutputMode::Visibility;
             options.clusterCasters = clusters;
-            render::Renderer renderer(s, options);
-            render::OffscreenTarget target(96, 96);
-            renderer.render(0.0f, s.camera, 96, 96, target.framebuffer());
-            triangles = renderer.shadowTriangles().at(0);
-            return renderer.readLinear();
+            return visibilityAndTriangles(s, options, 96, 96, triangles);
         };
         std::size_t clustered = 0, whole = 0;
         const std::vector<float> withClusters = renderWith(true, clustered), drawnWhole = renderWith(false, whole);
@@ -242,14 +248,9 @@ TEST(Culling, CascadesFittedToTheirReceiversKeepEveryPixel) {
         auto renderWith = [&](bool fit, std::size_t& triangles) {
             render::RenderOptions options;
             options.technique = "cascaded";
-            options.output = OutputMode::Visibility;
             options.parameters = c.parameters;
             options.parameters.emplace_back("fit_receivers", fit ? "true" : "false");
-            render::Renderer renderer(s, options);
-            render::OffscreenTarget target(128, 72);
-            renderer.render(0.0f, s.camera, 128, 72, target.framebuffer());
-            triangles = renderer.shadowTriangles().at(0);
-            return renderer.readLinear();
+            return visibilityAndTriangles(s, options, 128, 72, triangles);
         };
         std::size_t fitted = 0, whole = 0;
         const std::vector<float> withFit = renderWith(true, fitted), wholeLayers = renderWith(false, whole);

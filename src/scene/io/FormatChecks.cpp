@@ -378,17 +378,25 @@ private:
         return root.at(key);
     }
 
-    void buffers(const json& root) {
-        const json& list = array(root, "buffers");
+    // each(item, index, where) for every entry of root[key], which must be an array of objects.
+    template <typename Each>
+    void forEachObject(const json& root, const char* key, Each each) const {
+        const json& list = array(root, key);
         for (std::size_t i = 0; i < list.size(); ++i) {
-            const std::string where = "buffers[" + std::to_string(i) + "]";
+            const std::string where = std::string(key) + "[" + std::to_string(i) + "]";
             if (!list[i].is_object()) fail(where + " must be an object");
-            const std::uint64_t length = member(list[i], "byteLength", where, 0, true);
+            each(list[i], i, where);
+        }
+    }
+
+    void buffers(const json& root) {
+        forEachObject(root, "buffers", [&](const json& item, std::size_t i, const std::string& where) {
+            const std::uint64_t length = member(item, "byteLength", where, 0, true);
             bufferLengths_.push_back(length);
-            const std::uint64_t held = bufferBytes(list[i], i, where);
+            const std::uint64_t held = bufferBytes(item, i, where);
             if (length > held)
                 fail(where + " declares " + std::to_string(length) + " bytes; its data holds " + std::to_string(held));
-        }
+        });
     }
 
     // The bytes a buffer's data holds: the BIN chunk, a data: URI, or a file beside the model.
@@ -414,52 +422,46 @@ private:
     }
 
     void bufferViews(const json& root) {
-        const json& list = array(root, "bufferViews");
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const std::string where = "bufferViews[" + std::to_string(i) + "]";
-            if (!list[i].is_object()) fail(where + " must be an object");
-            const std::uint64_t buffer = member(list[i], "buffer", where, 0, true);
+        forEachObject(root, "bufferViews", [&](const json& item, std::size_t, const std::string& where) {
+            const std::uint64_t buffer = member(item, "buffer", where, 0, true);
             if (buffer >= bufferLengths_.size()) fail(where + ".buffer names buffer " + std::to_string(buffer) + ", which does not exist");
-            const std::uint64_t offset = member(list[i], "byteOffset", where, 0), length = member(list[i], "byteLength", where, 0, true);
-            const std::uint64_t stride = member(list[i], "byteStride", where, 0);
+            const std::uint64_t offset = member(item, "byteOffset", where, 0), length = member(item, "byteLength", where, 0, true);
+            const std::uint64_t stride = member(item, "byteStride", where, 0);
             if (stride != 0 && (stride < 4 || stride > 252)) fail(where + ".byteStride must be within 4..252");
             if (offset > bufferLengths_[buffer] || length > bufferLengths_[buffer] - offset)
                 fail(where + " reaches byte " + std::to_string(offset + length) + " of buffer " + std::to_string(buffer) + ", which has " +
                      std::to_string(bufferLengths_[buffer]));
             views_.push_back({length, stride});
-        }
+        });
     }
 
     void accessors(const json& root) const {
         static const std::map<std::uint64_t, std::uint64_t> componentBytes = {{5120, 1}, {5121, 1}, {5122, 2}, {5123, 2}, {5125, 4}, {5126, 4}};
         static const std::map<std::string, std::uint64_t> components = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
                                                                           {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
-        const json& list = array(root, "accessors");
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const std::string where = "accessors[" + std::to_string(i) + "]";
-            if (!list[i].is_object()) fail(where + " must be an object");
-            const auto bytes = componentBytes.find(member(list[i], "componentType", where, 0, true));
+        forEachObject(root, "accessors", [&](const json& item, std::size_t, const std::string& where) {
+            const auto bytes = componentBytes.find(member(item, "componentType", where, 0, true));
             if (bytes == componentBytes.end()) fail(where + ".componentType is not a glTF component type");
-            const json& type = list[i].contains("type") ? list[i].at("type") : json();
+            const json& type = item.contains("type") ? item.at("type") : json();
             const auto n = type.is_string() ? components.find(type.get<std::string>()) : components.end();
             if (n == components.end()) fail(where + ".type must be one of SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3, MAT4");
-            const std::uint64_t count = member(list[i], "count", where, 0, true);
+            const std::uint64_t count = member(item, "count", where, 0, true);
             if (count == 0) fail(where + ".count must be at least 1");
             const std::uint64_t element = bytes->second * n->second;
-            if (!list[i].contains("bufferView")) {  // zeros (or sparse values): the importer allocates count elements
+            if (!item.contains("bufferView")) {  // zeros (or sparse values): the importer allocates count elements
                 if (count > (std::uint64_t{1} << 28) / element) fail(where + " declares " + std::to_string(count) + " elements with no data");
-                continue;
+                return;
             }
-            const std::uint64_t view = member(list[i], "bufferView", where, 0);
+            const std::uint64_t view = member(item, "bufferView", where, 0);
             if (view >= views_.size()) fail(where + ".bufferView names view " + std::to_string(view) + ", which does not exist");
-            const std::uint64_t offset = member(list[i], "byteOffset", where, 0);
+            const std::uint64_t offset = member(item, "byteOffset", where, 0);
             const std::uint64_t stride = views_[view].stride != 0 ? views_[view].stride : element;
             const std::uint64_t available = views_[view].length;
             // offset + stride * (count - 1) + element <= available, without overflow
             if (offset > available || element > available - offset || (count - 1) > (available - offset - element) / stride)
                 fail(where + ": " + std::to_string(count) + " elements of " + std::to_string(element) + " bytes do not fit bufferView " +
                      std::to_string(view) + " (" + std::to_string(available) + " bytes)");
-        }
+        });
     }
 
     struct View {
