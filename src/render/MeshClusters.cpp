@@ -74,8 +74,7 @@ bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox) {
     if (box.empty()) return true;
     glm::vec4 corners[8];
     for (int i = 0; i < 8; ++i)
-        corners[i] = clipFromBox * glm::vec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                                             (i & 4) ? box.max.z : box.min.z, 1.0f);
+        corners[i] = clipFromBox * glm::vec4(box.corner(i), 1.0f);
     for (int axis = 0; axis < 3; ++axis)
         for (float side : {-1.0f, 1.0f}) {
             bool allOutside = true;

@@ -13,8 +13,6 @@
 
 namespace penumbra::render {
 
-// True when the box lies wholly outside one of the six planes of `viewProj`'s clip volume
-// (-w <= x, y, z <= w): conservative, so a caster that may reach the volume is kept.
 std::string chosenTechnique(const RenderOptions& options, const scene::Scene& scene) {
     if (!options.technique.empty()) return options.technique;
     return scene.technique.empty() ? "hard" : scene.technique;

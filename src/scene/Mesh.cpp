@@ -5,10 +5,7 @@ namespace penumbra::scene {
 Bounds Bounds::transformed(const glm::mat4& m) const {
     Bounds out;
     if (empty()) return out;
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 corner{(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
-        out.add(glm::vec3(m * glm::vec4(corner, 1.0f)));
-    }
+    for (int i = 0; i < 8; ++i) out.add(glm::vec3(m * glm::vec4(corner(i), 1.0f)));
     return out;
 }
 

@@ -16,6 +16,8 @@ struct Bounds {
     void add(const Bounds& b) { if (!b.empty()) { add(b.min); add(b.max); } }
     glm::vec3 center() const { return (min + max) * 0.5f; }
     glm::vec3 extent() const { return max - min; }
+    // Corner i of 8: bit 0 picks max.x, bit 1 max.y, bit 2 max.z (frustumCorners' order).
+    glm::vec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
     Bounds transformed(const glm::mat4& m) const;
 };
 

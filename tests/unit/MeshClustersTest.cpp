@@ -75,7 +75,9 @@ TEST(MeshClusters, CullingKeepsEveryTriangleThatReachesTheVolume) {
     std::vector<bool> kept(c.indices.size() / 3, false);
     std::uint32_t keptTriangles = 0;
     for (std::size_t i = 0; i < ranges.size(); ++i) {
-        if (i > 0) EXPECT_GT(ranges[i].firstIndex, ranges[i - 1].firstIndex + ranges[i - 1].indexCount) << "neighbours not merged";
+        if (i > 0) {
+            EXPECT_GT(ranges[i].firstIndex, ranges[i - 1].firstIndex + ranges[i - 1].indexCount) << "neighbours not merged";
+        }
         for (std::uint32_t t = ranges[i].firstIndex / 3; t < (ranges[i].firstIndex + ranges[i].indexCount) / 3; ++t) kept[t] = true;
         keptTriangles += ranges[i].indexCount / 3;
     }

@@ -86,8 +86,7 @@ bool clipSegment(glm::vec3& a, glm::vec3& b, const std::array<glm::vec4, 6>& pla
 std::array<glm::vec3, 8> boxCorners(const scene::Bounds& box) {
     std::array<glm::vec3, 8> c{};
     for (int i = 0; i < 8; ++i)
-        c[static_cast<std::size_t>(i)] = {(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                                          (i & 4) ? box.max.z : box.min.z};
+        c[static_cast<std::size_t>(i)] = box.corner(i);
     return c;
 }
 

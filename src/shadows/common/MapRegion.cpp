@@ -21,8 +21,7 @@ TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int 
     if (bounds.empty()) return TexelRect(0);
     std::vector<glm::vec3> corners;
     for (int i = 0; i < 8; ++i)
-        corners.emplace_back((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
-                             (i & 4) ? bounds.max.z : bounds.min.z);
+        corners.push_back(bounds.corner(i));
     return texelRect(corners, viewProj, resolution);
 }
 

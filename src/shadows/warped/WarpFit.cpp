@@ -103,7 +103,7 @@ std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& viewProj, const scene::
     }
     // Box corners inside the frustum are vertices of the intersection too.
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p{(i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z};
+        const glm::vec3 p = box.corner(i);
         const glm::vec4 q = viewProj * glm::vec4(p, 1.0f);
         if (q.w > 0 && std::abs(q.x) <= q.w && std::abs(q.y) <= q.w && std::abs(q.z) <= q.w) out.push_back(p);
     }
