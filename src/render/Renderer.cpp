@@ -379,7 +379,11 @@ void Renderer::resolve(GLuint target, int width, int height, const scene::Camera
     const gl::ScopedPassState scope(gl::PassState::fullscreen());
     const bool shaded = options_.output == OutputMode::Shaded;
     const gl::Program& program = shaded && scene_.fog.enabled ? foggedResolve_ : resolve_;
-    program.set("uInvProj", glm::inverse(camera.projection(aspect)));
+    // clip z = P22 z + P32, clip w = -z: the view depth -z at window depth d is
+    // P32 / (2d - 1 + P22) = (P32 / 2) / (d + (P22 - 1) / 2); x / -z = ndc.x / P00, likewise y.
+    const glm::mat4 projection = camera.projection(aspect);
+    program.set("uViewDepth", glm::vec2(projection[3][2] * 0.5f, (projection[2][2] - 1.0f) * 0.5f));
+    program.set("uRaySlope", glm::vec2(1.0f / projection[0][0], 1.0f / projection[1][1]));
     program.set("uBackground", scene_.background);
     program.set("uFog", glm::vec2(scene_.fog.start, scene_.fog.end));
     program.set("uEncodeSrgb", shaded ? 1 : 0);

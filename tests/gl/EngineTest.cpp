@@ -162,6 +162,29 @@ TEST(Fog, FarSurfacesFadeToTheBackground) {
     EXPECT_NEAR(farWall.b, 0.8f, 0.02f);
 }
 
+// Fog goes by the distance along each pixel's ray, not by view depth: a wall facing the camera at
+// view depth 20 is fogged more at the image's corners (distance up to 20 * 1.29) than at its centre.
+TEST(Fog, FollowsTheDistanceAlongEachPixelsRay) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 0, 0], "target": [0, 0, -1], "fov_deg": 60, "near": 0.5, "far": 100 },
+      "background": [0.2, 0.4, 0.8], "ambient": [1, 1, 1], "fog": { "start": 10, "end": 40 },
+      "objects": [ { "shape": "box", "size": [200, 200, 0.1], "position": [0, 0, -20.05], "material": { "diffuse": [1, 0, 0] } } ] })");
+    render::Renderer renderer(s);
+    render::OffscreenTarget target(64, 64);
+    renderer.render(0, s.camera, 64, 64, target.framebuffer());
+    const auto pixels = target.readRgba8();  // image order, sRGB
+    const float slope = std::tan(glm::radians(30.0f));
+    for (const glm::ivec2 p : {glm::ivec2(32, 32), glm::ivec2(0, 0), glm::ivec2(63, 5), glm::ivec2(10, 50)}) {
+        const glm::vec2 ndc = (glm::vec2(p) + 0.5f) / 32.0f - 1.0f;
+        const float distance = 20.0f * std::sqrt(1.0f + glm::dot(ndc * slope, ndc * slope));
+        const glm::vec3 expected = glm::mix(glm::vec3(1, 0, 0), glm::vec3(0.2f, 0.4f, 0.8f), glm::smoothstep(10.0f, 40.0f, distance));
+        const std::size_t i = (static_cast<std::size_t>(p.y) * 64 + p.x) * 4;
+        const glm::vec3 got = srgbToLinear(glm::vec3(pixels[i], pixels[i + 1], pixels[i + 2]) / 255.0f);
+        EXPECT_NEAR(got.r, expected.r, 0.01f) << "pixel " << p.x << "," << p.y << " at distance " << distance;
+        EXPECT_NEAR(got.b, expected.b, 0.01f) << "pixel " << p.x << "," << p.y << " at distance " << distance;
+    }
+}
+
 TEST(BadInput, MissingTextureRendersAVisibleChecker) {
     log::takeWarnings();
     scene::Scene s = sceneFromJson(R"({
