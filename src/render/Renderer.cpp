@@ -46,8 +46,14 @@ static PassPrograms buildPassPrograms() {
 
 // The light layout the first frame will have (slots depend on the lights alone), so that the
 // constructor builds, and checks, the program that frame uses.
-static std::vector<std::string> initialLightLayout(const std::vector<scene::Light>& lights) {
-    return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), shadows::ShadowSlots::assign(lights)));
+static std::vector<std::string> initialLightLayout(const std::vector<scene::Light>& lights, bool translucentCasters) {
+    return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), shadows::ShadowSlots::assign(lights)),
+                              translucentCasters);
+}
+
+// Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
+static bool anyTranslucentCaster(const std::vector<Draw>& draws) {
+    return std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.castsShadow && d.translucent; });
 }
 
 Renderer::Renderer(scene::Scene& scene, RenderOptions options)
@@ -70,7 +76,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     options_.technique = chosenTechnique(options_, scene_);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
-    lightLayout_ = initialLightLayout(scene_.lights);
+    lightLayout_ = initialLightLayout(scene_.lights, anyTranslucentCaster(gpu_.draws(0.0f, scene_.camera.position)));
     lightingDefines_ = lightingDefines(*technique_);
     lighting_ = buildLighting(*technique_, lightingDefines_);
     PassPrograms passes = buildPassPrograms();
@@ -156,7 +162,8 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     const gpu::LightBlock block = packLights(scene_.lights, spaces, slots_);
     lightBlock_.update(0, sizeof(block), &block);
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
-    useLightLayout(lightLayoutDefines(block));
+    // A material made translucent at run time rebuilds the programs once (useLightLayout).
+    useLightLayout(lightLayoutDefines(block, anyTranslucentCaster(draws)));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).

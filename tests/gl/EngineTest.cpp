@@ -118,6 +118,44 @@ TEST(LightLayout, LightsEditedBetweenFramesRebuildTheLighting) {
     EXPECT_EQ(visibility(1), std::pair(0.0f, 1.0f)) << "the spot turned into a point light (a cube map)";
 }
 
+// A program for a scene without translucent casters leaves the tint lookups out
+// (SCENE_TRANSLUCENT_CASTERS 0): a slab made green glass between frames must rebuild it and tint
+// its shadow, t² = (0.01, 0.81, 0.01) through the slab's two faces, and turn it back to a black
+// shadow when made opaque again.
+TEST(LightLayout, CastersTurnedTranslucentBetweenFramesTintTheirShadow) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "box", "size": [2, 0.2, 2], "position": [-3, 2, 0], "material": { "diffuse": [1, 1, 1] } } ] })");
+    ASSERT_GE(s.objects[1].materialOverride, 0);
+    scene::Material& slab = s.materials[static_cast<std::size_t>(s.objects[1].materialOverride)];
+    for (const char* technique : {"hard", "pcf-poisson16"}) {
+        render::RenderOptions options;
+        options.technique = technique;
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(96, 96);
+        auto visibility = [&]() {  // on the ground at x = -1 (in the slab's shadow) and x = +2
+            renderer.setOutputMode(OutputMode::Visibility, 0);
+            renderer.render(0.0f, s.camera, 96, 96, target.framebuffer());
+            const Frame f{96, 96, renderer.readLinear()};
+            return std::pair{f.at(40, 48), f.at(65, 48)};
+        };
+        slab.transmission = glm::vec3(0.0f);
+        auto [shadowed, lit] = visibility();
+        EXPECT_LT(glm::length(shadowed), 1e-3f) << technique << ": opaque slab";
+        EXPECT_NEAR(lit.g, 1.0f, 1e-3f) << technique;
+        slab.transmission = glm::vec3(0.1f, 0.9f, 0.1f);
+        std::tie(shadowed, lit) = visibility();
+        EXPECT_NEAR(shadowed.r, 0.01f, 2.0f / 255) << technique << ": green glass";
+        EXPECT_NEAR(shadowed.g, 0.81f, 2.0f / 255) << technique << ": green glass";
+        EXPECT_NEAR(shadowed.b, 0.01f, 2.0f / 255) << technique << ": green glass";
+        slab.transmission = glm::vec3(0.0f);
+        std::tie(shadowed, lit) = visibility();
+        EXPECT_LT(glm::length(shadowed), 1e-3f) << technique << ": opaque again";
+    }
+}
+
 // Alpha-tested casters go through their own depth program (DepthCasterProgram: the plain one
 // has no alpha test at all), in every kind of map: two opaque-textured plates over the ground,
 // one cut at 0.5 (every texel kept) and one at 1.1 (every texel a hole), 2 units up. Under a sun

@@ -2,15 +2,12 @@
 #include "src/shadows/common/glsl/shadow_coord.glsl"
 #include "src/shadows/common/glsl/shadow_samplers.glsl"
 
-// The tint applies only behind the nearest translucent layer (its depth is in alpha).
-vec3 tintBehind(vec4 tint, float depth) { return depth > tint.a ? tint.rgb : vec3(1.0); }
-
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     int slot = lightShadowSlot(light);
     if (slot < 0) return vec3(1.0);
     ShadowCoord sc = shadowCoord(light, P, N, NdotL);
     if (!sc.inside) return vec3(1.0);
     if (lightType(light) == kLightPoint)
-        return shadowCompareCube(slot, sc.uv, sc.depth) * tintBehind(shadowTintCube(slot, sc.uv), sc.depth);
-    return shadowCompare2D(slot, vec3(sc.uv.xy, sc.depth)) * tintBehind(shadowTint2D(slot, sc.uv.xy), sc.depth);
+        return shadowCompareCube(slot, sc.uv, sc.depth) * shadowTintBehindCube(slot, sc.uv, sc.depth);
+    return shadowCompare2D(slot, vec3(sc.uv.xy, sc.depth)) * shadowTintBehind2D(slot, sc.uv.xy, sc.depth);
 }

@@ -111,8 +111,7 @@ float rawDepthAt(ShadowSite s, vec2 texels) {
 
 // The translucent tint behind the nearest translucent layer (the colour map of Nápravník 2020).
 vec3 tintAt(ShadowSite s) {
-    vec4 t = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
-    return s.depth > t.a ? t.rgb : vec3(1.0);
+    return s.cube ? shadowTintBehindCube(s.slot, s.coord, s.depth) : shadowTintBehind2D(s.slot, s.coord.xy, s.depth);
 }
 
 // Linear depth in [0, 1] between the light's near and far planes, from window depth.
