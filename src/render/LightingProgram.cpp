@@ -2,7 +2,7 @@
 
 namespace penumbra::render {
 
-std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, bool translucentCasters) {
+std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int sunLight, bool translucentCasters) {
     std::string types, shadowSlots, projectorSlots;
     for (int i = 0; i < gpu::kMaxLights; ++i) {
         const gpu::LightData& l = block.lights[i];
@@ -16,7 +16,7 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, bool t
     for (int i = 0; i < block.count.x; ++i) eachLight += " SHADE_LIGHT(" + std::to_string(i) + ")";
     return {"SCENE_LIGHT_COUNT " + std::to_string(block.count.x), "SHADE_EACH_LIGHT" + eachLight, "SCENE_LIGHT_TYPES " + types,
             "SCENE_SHADOW_SLOTS " + shadowSlots, "SCENE_PROJECTOR_SLOTS " + projectorSlots,
-            std::string("SCENE_TRANSLUCENT_CASTERS ") + (translucentCasters ? "1" : "0")};
+            "SCENE_SUN_LIGHT " + std::to_string(sunLight), std::string("SCENE_TRANSLUCENT_CASTERS ") + (translucentCasters ? "1" : "0")};
 }
 
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines) {

@@ -15,10 +15,12 @@ namespace penumbra::render {
 
 // SCENE_LIGHT_COUNT, SHADE_EACH_LIGHT (the unrolled light loop: SHADE_LIGHT(0) SHADE_LIGHT(1) ..),
 // SCENE_LIGHT_TYPES, SCENE_SHADOW_SLOTS and SCENE_PROJECTOR_SLOTS read from a
-// packed light block (so they cannot disagree with what the block holds), and
+// packed light block (so they cannot disagree with what the block holds);
+// SCENE_SUN_LIGHT: the light the view-dependent techniques take over (ShadowSlots::sun, -1: none),
+// so that each other light's lookup holds none of their code; and
 // SCENE_TRANSLUCENT_CASTERS: 0 when no translucent object casts a shadow, so that the
 // lookups' tint fetches fold away (every tint map is white then). Equal defines = the same program.
-std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, bool translucentCasters = true);
+std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int sunLight = -1, bool translucentCasters = true);
 
 // lighting.vert + lighting.frag with `lookup` as "shadow_lookup.glsl" and `defines` (a light
 // layout, a transparency variant).

@@ -47,8 +47,8 @@ static PassPrograms buildPassPrograms() {
 // The light layout the first frame will have (slots depend on the lights alone), so that the
 // constructor builds, and checks, the program that frame uses.
 static std::vector<std::string> initialLightLayout(const std::vector<scene::Light>& lights, bool translucentCasters) {
-    return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), shadows::ShadowSlots::assign(lights)),
-                              translucentCasters);
+    const shadows::ShadowSlots slots = shadows::ShadowSlots::assign(lights);
+    return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), slots), slots.sun, translucentCasters);
 }
 
 // Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
@@ -163,7 +163,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     lightBlock_.update(0, sizeof(block), &block);
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
     // A material made translucent at run time rebuilds the programs once (useLightLayout).
-    useLightLayout(lightLayoutDefines(block, anyTranslucentCaster(draws)));
+    useLightLayout(lightLayoutDefines(block, slots_.sun, anyTranslucentCaster(draws)));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).

@@ -30,12 +30,22 @@ bool insideCascade(int c, vec3 P) {
     return all(greaterThan(s.xy, vec2(0.01))) && all(lessThan(s.xy, vec2(0.99)));
 }
 
+// Whether `light` is the cascaded one. A program specialised to the light layout knows it at
+// compile time (SCENE_SUN_LIGHT is the renderer's ShadowSlots::sun, the light renderMaps takes),
+// so the other lights' lookups hold no cascade code and the sun's no plain-map fetch: llvmpipe
+// runs both sides of a uniform branch for every pixel.
+#ifdef SCENE_SUN_LIGHT
+bool cascadedLight(int light) { return light == SCENE_SUN_LIGHT; }
+#else
+bool cascadedLight(int light) { return light == uCascadeLight; }
+#endif
+
 const vec3 kCascadeTints[8] = vec3[](vec3(1.0, 0.6, 0.6), vec3(0.6, 1.0, 0.6), vec3(0.6, 0.6, 1.0), vec3(1.0, 1.0, 0.5),
                                      vec3(1.0, 0.5, 1.0), vec3(0.5, 1.0, 1.0), vec3(1.0, 0.8, 0.5), vec3(0.8, 0.8, 0.8));
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite site = shadowSite(light, P, N, NdotL);
-    if (light != uCascadeLight) {
+    if (!cascadedLight(light)) {
         if (!site.inside) return vec3(1.0);
         return compareAt(site, vec2(0.0), 0.0) * tintAt(site);
     }

@@ -31,12 +31,20 @@ int warpedTile(vec3 P) {
     return cell.y * uWarpedGrid.x + cell.x;
 }
 
+// Whether `light` is the warped one: a compile-time answer in a program specialised to the light
+// layout (as cascadedLight in cascaded/lookup.glsl).
+#ifdef SCENE_SUN_LIGHT
+bool warpedLight(int light) { return light == SCENE_SUN_LIGHT; }
+#else
+bool warpedLight(int light) { return light == uWarpedLight; }
+#endif
+
 const vec3 kTileTints[4] = vec3[](vec3(1.0, 0.6, 0.6), vec3(0.6, 1.0, 0.6), vec3(0.6, 0.6, 1.0), vec3(1.0, 1.0, 0.5));
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite site = shadowSite(light, P, N, NdotL);
     vec3 tint = site.inside ? tintAt(site) : vec3(1.0);
-    if (light != uWarpedLight) return site.inside ? compareAt(site, vec2(0.0), 0.0) * tint : vec3(1.0);
+    if (!warpedLight(light)) return site.inside ? compareAt(site, vec2(0.0), 0.0) * tint : vec3(1.0);
     LightData L = uLights[light];
     vec3 toLight = -normalize(L.directionFar.xyz);
     int tile = warpedTile(P);
