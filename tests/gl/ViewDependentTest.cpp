@@ -68,6 +68,29 @@ TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
     std::printf("sweep of %d technique/camera/sun cases: at most %d pixels away from shadow edges differ\n", cases, worst);
 }
 
+// Cascades chosen either way (CASCADE_SELECT, compiled into the lookup: by view depth, or by the
+// first cascade box that holds the point) lose no shadow and invent none over the sweep's pitches,
+// with the sun low behind the viewer and high beside it.
+TEST(ViewDependent, CascadesChosenByDepthOrByBoxLoseNoShadow) {
+    scene::Scene s = sweepScene();
+    const glm::vec3 target(0.0f, 0.5f, -10.0f);
+    for (const auto& [sunAz, sunEl] : {std::pair(180, 25.0f), std::pair(90, 70.0f)})
+        for (float pitch : {-12.0f, -50.0f}) {
+            const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
+            s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+            s.camera.target = target;
+            s.camera.position = target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
+            reference::Comparison cmp(s, 160, 96, 0.0f);
+            cmp.traceReference(1, false);
+            for (const char* select : {"depth", "projection"}) {
+                const MaskComparison m = compareShadowMasks(cmp, cmp.evaluate("cascaded", 1024, 0, {{"select", select}}));
+                EXPECT_GT(m.expectedOn, 100) << "the scene's shadows are in view";
+                EXPECT_LE(m.mismatchesAwayFromEdges, 12) << "select=" << select << " sun az " << sunAz << " el " << sunEl << " pitch "
+                                                         << pitch << ": " << m.mismatchesAwayFromEdges << " pixels away from edges differ";
+            }
+        }
+}
+
 // SDSM: a wall 20 m ahead hides the rest of a 1 km view; the cascades then split [first
 // visible, last visible] instead of [near, far], and the first cascade's texels shrink.
 TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {

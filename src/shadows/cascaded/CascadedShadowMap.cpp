@@ -99,7 +99,6 @@ void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {
     glProgramUniform3fv(lighting.id(), lighting.location("uCascadeTexel[0]"), count, &texels[0].x);
     lighting.set("uCascadeCameraView", cameraView_);
     lighting.set("uCascadeBlend", blend_);
-    lighting.set("uCascadeSelect", select_);
     lighting.set("uCascadeDebug", debugTint_ ? 1 : 0);
 }
 

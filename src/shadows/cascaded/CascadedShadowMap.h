@@ -16,6 +16,9 @@ public:
     std::string name() const override { return "cascaded"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
+    // the other way too, a matrix product per cascade tried).
+    std::vector<std::string> lookupDefines() const override { return {"CASCADE_SELECT " + std::to_string(select_)}; }
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + cascades_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override;
@@ -28,7 +31,7 @@ protected:
     std::vector<Parameter> declareParameters() override;
 
 private:
-    int count_ = 4, select_ = 0;  // select: 0 by depth, 1 by projection (the lookup's uCascadeSelect)
+    int count_ = 4, select_ = 0;  // select: 0 by depth, 1 by projection (the lookup's CASCADE_SELECT)
     float lambda_ = 0.75f, blend_ = 0.1f, maxDistance_ = 0;
     bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true, fitReceivers_ = true;
     int light_ = -1, fittedResolution_ = 0;

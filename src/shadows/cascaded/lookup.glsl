@@ -11,7 +11,7 @@ uniform mat4 uCascadeMatrix[8];   // world -> [0,1]^3
 uniform vec3 uCascadeTexel[8];    // x: texel world size, y: depth range (far - near)
 uniform mat4 uCascadeCameraView;
 uniform float uCascadeBlend;      // share of each cascade blended into the next
-uniform int uCascadeSelect;       // 0 by depth, 1 by projection
+const int kCascadeSelect = CASCADE_SELECT;  // 0 by depth, 1 by projection (lookupDefines)
 uniform int uCascadeDebug;        // 1: tint each cascade
 
 float sampleCascade(int c, int light, vec3 P, vec3 N, float NdotL) {
@@ -52,7 +52,7 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     float depth = -(uCascadeCameraView * vec4(P, 1.0)).z;
     int c = uCascadeCount;
     for (int i = 0; i < uCascadeCount; ++i) {
-        bool chosen = uCascadeSelect == 0 ? depth < uCascadeSplits[i + 1] : insideCascade(i, P);
+        bool chosen = kCascadeSelect == 0 ? depth < uCascadeSplits[i + 1] : insideCascade(i, P);
         if (chosen) { c = i; break; }
     }
     if (c >= uCascadeCount) return site.inside ? tintAt(site) : vec3(1.0);  // beyond the last split: lit
