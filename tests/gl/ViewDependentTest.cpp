@@ -91,6 +91,35 @@ TEST(ViewDependent, CascadesChosenByDepthOrByBoxLoseNoShadow) {
         }
 }
 
+// The tile count is compiled into the warped lookup (WARPED_TILES): a grid changed on a live
+// renderer must rebuild it in the same frame, each picture equal to the next frame's and to a
+// fresh renderer's.
+TEST(ViewDependent, ATileGridChangedOnALiveRendererRebuildsTheLookup) {
+    scene::Scene s = sweepScene();
+    s.camera.position = glm::vec3(0.0f, 6.0f, 4.0f);
+    auto render = [&](render::Renderer& r) {
+        render::OffscreenTarget target(128, 80);
+        r.render(0.0f, s.camera, 128, 80, target.framebuffer());
+        return r.readLinear();
+    };
+    render::RenderOptions options;
+    options.technique = "lispsm";
+    options.output = render::OutputMode::Visibility;
+    render::Renderer live(s, options);
+    const std::vector<float> single = render(live);
+    for (const char* side : {"2", "1"}) {
+        shadows::applyParameters(live.technique().parameters(), {{"cols", side}, {"rows", side}});
+        const std::vector<float> changed = render(live);
+        EXPECT_EQ(changed, render(live)) << side << " x " << side << " tiles: the first frame after the change as the next";
+        options.parameters = {{"cols", side}, {"rows", side}};
+        render::Renderer fresh(s, options);
+        EXPECT_EQ(changed, render(fresh)) << side << " x " << side << " tiles";
+        if (std::string(side) == "2") {
+            EXPECT_NE(changed, single) << "four tiles' maps differ from one map";
+        }
+    }
+}
+
 // SDSM: a wall 20 m ahead hides the rest of a 1 km view; the cascades then split [first
 // visible, last visible] instead of [near, far], and the first cascade's texels shrink.
 TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {

@@ -35,7 +35,7 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
     const scene::Camera& cam = *frame.camera;
-    const glm::ivec2 grid(std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4));
+    const glm::ivec2 grid = requestedGrid();
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) {
         grid_ = grid;
@@ -71,6 +71,13 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
         planes.push_back(v.clipPlane);
     }
     warped_.render(frame, sun, res, viewProj, planes);
+}
+
+glm::ivec2 WarpedShadowMap::requestedGrid() const { return {std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4)}; }
+
+std::vector<std::string> WarpedShadowMap::lookupDefines() const {
+    const glm::ivec2 grid = requestedGrid();
+    return {"WARPED_TILES " + std::to_string(grid.x * grid.y)};
 }
 
 void WarpedShadowMap::bindLookup(const gl::Program& lighting) const {

@@ -17,6 +17,10 @@ public:
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/warped/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
+    // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
+    // search and its dynamically indexed matrix.
+    std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + warped_.memoryBytes(); }
     std::vector<DebugView> debugViews() const override;
@@ -26,6 +30,8 @@ protected:
     std::vector<Parameter> declareParameters() override;
 
 private:
+    glm::ivec2 requestedGrid() const;
+
     std::string name_;
     Warp warp_;
     int cols_, rows_;
