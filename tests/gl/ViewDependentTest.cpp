@@ -26,6 +26,19 @@ scene::Scene sweepScene() {
                    { "shape": "box", "size": [4, 0.3, 1], "position": [0, 3.5, -14] } )" + posts + "] }");
 }
 
+// One case of the sweep: the sun at azimuth `sunAz` and elevation `sunEl` (degrees), the camera
+// 14 m from the scene's middle, pitched by `pitch`; the reference traced for it at 160 x 96.
+reference::Comparison sweepCase(scene::Scene& s, int sunAz, float sunEl, float pitch) {
+    const glm::vec3 target(0.0f, 0.5f, -10.0f);
+    const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
+    s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    s.camera.target = target;
+    s.camera.position = target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
+    reference::Comparison cmp(s, 160, 96, 0.0f);
+    cmp.traceReference(1, false);
+    return cmp;
+}
+
 // Shadow masks of the reference and of a technique (pixels the light cannot reach count as
 // shadowed in both), compared away from the reference's shadow edges: rasterisation and rays
 // may differ by a pixel along an edge, a lost or invented shadow shows up inside a region.
@@ -42,17 +55,11 @@ MaskComparison compareShadowMasks(const reference::Comparison& cmp, const refere
 
 TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
     scene::Scene s = sweepScene();
-    const glm::vec3 target(0.0f, 0.5f, -10.0f);
     int worst = 0, cases = 0;
     for (int sunAz : {0, 90, 180, 270})
         for (float sunEl : {25.0f, 70.0f})
             for (float pitch : {-12.0f, -50.0f, -88.0f}) {
-                const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
-                s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-                s.camera.target = target;
-                s.camera.position = target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
-                reference::Comparison cmp(s, 160, 96, 0.0f);
-                cmp.traceReference(1, false);
+                reference::Comparison cmp = sweepCase(s, sunAz, sunEl, pitch);
                 for (const char* technique : {"lispsm", "psm", "lispsm-tiled"}) {
                     const MaskComparison m = compareShadowMasks(cmp, cmp.evaluate(technique, 1024, 0));
                     // A lost shadow is a region; a dozen scattered pixels (0.08%) are sub-pixel
@@ -73,15 +80,9 @@ TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
 // with the sun low behind the viewer and high beside it.
 TEST(ViewDependent, CascadesChosenByDepthOrByBoxLoseNoShadow) {
     scene::Scene s = sweepScene();
-    const glm::vec3 target(0.0f, 0.5f, -10.0f);
     for (const auto& [sunAz, sunEl] : {std::pair(180, 25.0f), std::pair(90, 70.0f)})
         for (float pitch : {-12.0f, -50.0f}) {
-            const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
-            s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-            s.camera.target = target;
-            s.camera.position = target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
-            reference::Comparison cmp(s, 160, 96, 0.0f);
-            cmp.traceReference(1, false);
+            reference::Comparison cmp = sweepCase(s, sunAz, sunEl, pitch);
             for (const char* select : {"depth", "projection"}) {
                 const MaskComparison m = compareShadowMasks(cmp, cmp.evaluate("cascaded", 1024, 0, {{"select", select}}));
                 EXPECT_GT(m.expectedOn, 100) << "the scene's shadows are in view";
