@@ -180,7 +180,11 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.camera = &camera;
         frame.aspect = aspect;
         frame.sceneBounds = bounds;
-        for (const Draw& d : draws) gpu_.addSurfaceBounds(d, frame.surfaceBounds);
+        frame.surfaceBounds = [&] {
+            std::vector<scene::Bounds> boxes;
+            for (const Draw& d : draws) gpu_.addSurfaceBounds(d, boxes);
+            return boxes;
+        };
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const auto selected = [](const Draw& d, const shadows::CasterSelection& selection) {
             using shadows::Motion;

@@ -91,8 +91,9 @@ struct ShadowFrame {
     float aspect = 1.0f;
     scene::Bounds sceneBounds;              // every object at this frame's time
     // Boxes around every surface a lookup may shade (a box per cluster of big meshes), at this
-    // frame's time: cascades fit the texels they draw to them.
-    std::vector<scene::Bounds> surfaceBounds;
+    // frame's time: cascades fit the texels they draw to them. Made when asked for, as
+    // casterBounds: most techniques never do.
+    std::function<std::vector<scene::Bounds>()> surfaceBounds;
 };
 
 // A texture worth showing in the debug overlay.

@@ -70,11 +70,12 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
 // and cost no pass.
 std::vector<TexelRect> CascadedShadowMap::readTexels(const ShadowFrame& frame, const scene::Light& sun, int res) const {
     std::vector<TexelRect> texels;
-    if (!fitReceivers_ || select_ != 0 || readSlices_.size() != fitted_.size()) return texels;
+    if (!fitReceivers_ || select_ != 0 || readSlices_.size() != fitted_.size() || !frame.surfaceBounds) return texels;
+    const std::vector<scene::Bounds> surfaces = frame.surfaceBounds();
     const int margin = 2 + static_cast<int>(std::ceil(std::abs(sun.shadow.normalOffset)));
     for (std::size_t c = 0; c < fitted_.size(); ++c) {
         TexelRect r(0);
-        for (const scene::Bounds& surface : frame.surfaceBounds)
+        for (const scene::Bounds& surface : surfaces)
             r = unite(r, texelRect(frustumInsideBox(readSlices_[c], surface), fitted_[c].viewProj, res));
         texels.push_back(grown(r, glm::ivec2(margin), res));
     }
