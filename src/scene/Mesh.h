@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -18,6 +19,11 @@ struct Bounds {
     glm::vec3 extent() const { return max - min; }
     // Corner i of 8: bit 0 picks max.x, bit 1 max.y, bit 2 max.z (frustumCorners' order).
     glm::vec3 corner(int i) const { return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z}; }
+    std::array<glm::vec3, 8> corners() const {
+        std::array<glm::vec3, 8> c{};
+        for (int i = 0; i < 8; ++i) c[static_cast<std::size_t>(i)] = corner(i);
+        return c;
+    }
     Bounds transformed(const glm::mat4& m) const;
 };
 

@@ -82,14 +82,6 @@ bool clipSegment(glm::vec3& a, glm::vec3& b, const std::array<glm::vec4, 6>& pla
     return true;
 }
 
-// The 8 corners of a box in frustumCorners' order (bit 0: x, bit 1: y, bit 2: z).
-std::array<glm::vec3, 8> boxCorners(const scene::Bounds& box) {
-    std::array<glm::vec3, 8> c{};
-    for (int i = 0; i < 8; ++i)
-        c[static_cast<std::size_t>(i)] = box.corner(i);
-    return c;
-}
-
 // Each edge of the solid with these corners, clipped to the planes; the ends that remain.
 void clippedEdges(const std::array<glm::vec3, 8>& corners, const std::array<glm::vec4, 6>& planes, std::vector<glm::vec3>& out) {
     for (int i = 0; i < 8; ++i)
@@ -114,7 +106,7 @@ std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::
                                              glm::vec4(0, 1, 0, -box.min.y), glm::vec4(0, -1, 0, box.max.y),
                                              glm::vec4(0, 0, 1, -box.min.z), glm::vec4(0, 0, -1, box.max.z)};
     clippedEdges(frustumCorners(viewProj), boxPlanes, points);
-    clippedEdges(boxCorners(box), frustum, points);
+    clippedEdges(box.corners(), frustum, points);
     return points;
 }
 

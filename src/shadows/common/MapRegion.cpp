@@ -2,7 +2,7 @@
 
 namespace penumbra::shadows {
 
-TexelRect texelRect(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution) {
+TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj, int resolution) {
     if (points.empty()) return TexelRect(0);
     glm::vec2 lo(1e9f), hi(-1e9f);
     for (const glm::vec3& p : points) {
@@ -19,10 +19,7 @@ TexelRect texelRect(const std::vector<glm::vec3>& points, const glm::mat4& viewP
 
 TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution) {
     if (bounds.empty()) return TexelRect(0);
-    std::vector<glm::vec3> corners;
-    for (int i = 0; i < 8; ++i)
-        corners.push_back(bounds.corner(i));
-    return texelRect(corners, viewProj, resolution);
+    return texelRect(bounds.corners(), viewProj, resolution);
 }
 
 glm::mat4 cropTo(const TexelRect& rect, int resolution) {

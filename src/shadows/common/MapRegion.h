@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
-#include <vector>
+#include <span>
 
 #include <epoxy/gl.h>
 
@@ -50,7 +50,7 @@ inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
 // eye, where its projection would flip.
 TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution);
 // The same for any set of points (empty when there are none).
-TexelRect texelRect(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution);
+TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj, int resolution);
 
 // Which texels of a map computed from one face of a depth map (moments, min/max depth tiles) must
 // be computed again this frame. All of them, unless `key` (the face's still casters' digest with
