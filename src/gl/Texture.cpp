@@ -55,11 +55,11 @@ Texture Texture::create2DArray(GLenum fmt, int w, int h, int layers, int levels)
     return t;
 }
 
-Texture Texture::createCube(GLenum fmt, int size) {
+Texture Texture::createCube(GLenum fmt, int size, int levels) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
-    glTextureStorage2D(id, 1, fmt, size, size);
-    Texture t(GL_TEXTURE_CUBE_MAP, id, size, size, bytesPerTexel(fmt) * 6u * size * size);
+    glTextureStorage2D(id, levels, fmt, size, size);
+    Texture t(GL_TEXTURE_CUBE_MAP, id, size, size, mipChainBytes(bytesPerTexel(fmt), size, size, levels) * 6u);
     t.setFilter(GL_LINEAR, GL_LINEAR);
     t.setWrap(GL_CLAMP_TO_EDGE);
     return t;

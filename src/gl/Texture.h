@@ -12,7 +12,7 @@ public:
     Texture() = default;
     static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
     static Texture create2DArray(GLenum internalFormat, int width, int height, int layers, int levels = 1);
-    static Texture createCube(GLenum internalFormat, int size);
+    static Texture createCube(GLenum internalFormat, int size, int levels = 1);
     static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
     // A 2D view of one layer (cube face) and one mip level of `source`, for passes that read or
     // write one face, or read one level while writing the next (no feedback loop: the view holds

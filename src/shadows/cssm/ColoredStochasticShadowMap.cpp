@@ -49,8 +49,12 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     m.cube = depth.cube;
     m.format = format;
     const int res = depth.resolution;
-    m.colour = m.cube ? gl::Texture::createCube(format, res) : gl::Texture::create2D(format, res, res);
-    m.colour.setFilter(GL_NEAREST, GL_NEAREST);  // stochastic texels must not be averaged by the sampler
+    // With tiles, their statistics live in the colour map's mip level log2(side) (tiles.frag).
+    const int tileLevel = side > 0 ? std::countr_zero(static_cast<unsigned>(side)) : 0;
+    const int levels = tileLevel + 1;  // resolutions are at least 16 texels (SceneFile)
+    m.colour = m.cube ? gl::Texture::createCube(format, res, levels) : gl::Texture::create2D(format, res, res, levels);
+    // Stochastic texels must not be averaged by the sampler; the lookup picks its level explicitly.
+    m.colour.setFilter(levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST, GL_NEAREST);
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
         m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
         gl::Framebuffer fb;
@@ -67,14 +71,13 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
         m.dirty.emplace_back(0, 0, res, res);  // new storage holds anything
         m.holds.push_back(0);
     }
-    m.tileSide = side;
     if (side == 0) return;
-    const int tiles = (res + side - 1) / side;
-    m.tiles = m.cube ? gl::Texture::createCube(GL_RGBA32F, tiles) : gl::Texture::create2D(GL_RGBA32F, tiles, tiles);
-    m.tiles.setFilter(GL_NEAREST, GL_NEAREST);
+    m.tileSide = side;
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        m.colourFaces.push_back(m.cube ? gl::Texture::view2D(m.colour, format, f) : gl::Texture{});
-        m.tileTargets.push_back(gl::Framebuffer::colourOnly(m.tiles, m.cube ? f : -1, "coloured stochastic shadow map tiles"));
+        // Level 0 alone as the tiles pass's input: it writes level log2(side) of the same texture.
+        m.colourFaces.push_back(gl::Texture::view2D(m.colour, format, f, 0));
+        m.tileTargets.push_back(
+            gl::Framebuffer::colourOnly(m.colour, m.cube ? f : -1, "coloured stochastic shadow map tiles", tileLevel));
     }
 }
 
@@ -94,12 +97,13 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     m.tileTargets[face].bind();
-    glViewport(0, 0, m.tiles.width(), m.tiles.height());
+    const int level = std::countr_zero(static_cast<unsigned>(m.tileSide));
+    glViewport(0, 0, m.resolution >> level, m.resolution >> level);
     glEnable(GL_SCISSOR_TEST);
     glScissor(first.x, first.y, last.x - first.x, last.y - first.y);
     tiles_.use();
     tiles_.set("uSide", m.tileSide);
-    (m.cube ? m.colourFaces[face] : m.colour).bind(0);
+    m.colourFaces[face].bind(0);
     fullscreenVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_SCISSOR_TEST);
@@ -180,7 +184,6 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     for (std::size_t i = 0; i < depth_.slots().size() && i < maps_.size(); ++i) {
         if (!depth_.slots().shadowed(i) || !maps_[i].colour.id()) continue;
         maps_[i].colour.bind(static_cast<GLuint>(depth_.slots().rawUnit(i)));
-        if (maps_[i].tileSide > 0) maps_[i].tiles.bind(static_cast<GLuint>(depth_.slots().tintUnit(i)));
     }
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uTileSide", tileSide());
@@ -190,7 +193,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
 
 std::size_t ColoredStochasticShadowMap::memoryBytes() const {
     std::size_t total = depth_.memoryBytes();
-    for (const auto& m : maps_) total += m.colour.memoryBytes() + m.tiles.memoryBytes();
+    for (const auto& m : maps_) total += m.colour.memoryBytes();
     return total;
 }
 

@@ -28,7 +28,9 @@ namespace penumbra::shadows {
 //   - xi=stratified: every threshold stratum once per 8 x 8 texel tile (caster.frag);
 //   - filter=box64 with coverage: the receiver's own texels place the coloured edge (as sharp
 //     as the plain map's), the tile counts of tiles.frag, blended between the 2 x 2 nearest
-//     tiles, give the transmittance, exact to 1/64 inside a layer.
+//     tiles, give the transmittance, exact to 1/64 inside a layer. The counts live in the
+//     colour map's own mip level log2(side), so the lookup reads tiles and (where the tiles
+//     cannot decide) texels in one loop with one fetch.
 class ColoredStochasticShadowMap final : public ShadowTechnique {
 public:
     enum class Variant { PerChannel = 1, Rgb = 2 };
@@ -60,10 +62,11 @@ private:
         // that a face whose translucent casters, opaque depth under them and ξ are as in the last
         // frame is not redrawn (DepthAndTintMaps::LightMaps::translucentKeys).
         std::vector<std::uint64_t> holds;
-        int tileSide = 0;                       // with coverage: tiles.frag's statistics
-        gl::Texture tiles;                      // RGBA32F (2D or cube), one texel per side x side tile
-        std::vector<gl::Texture> colourFaces;   // 2D views of the colour map's faces (tiles input)
-        std::vector<gl::Framebuffer> tileTargets;  // per face
+        // With coverage: tiles.frag's statistics, one texel per side x side tile, in the colour
+        // map's mip level log2(side) (0: no tiles).
+        int tileSide = 0;
+        std::vector<gl::Texture> colourFaces;      // 2D views of the colour map's level 0 faces (tiles input)
+        std::vector<gl::Framebuffer> tileTargets;  // per face: its level log2(side)
     };
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)

@@ -53,10 +53,11 @@ vec3 passes(ShadowSite s, vec2 texels) {
 // Where colour falls is decided by the receiver's own texels, exactly as the plain map decides
 // its edges; how much, by the share of light that passes the covered texels of the stratified
 // tiles around the receiver - exact to 1/side² inside a layer, since each tile holds every
-// threshold stratum once (caster.frag). The tiles' counts come precomputed (tiles.frag) and are
-// blended bilinearly between the 2 x 2 nearest tiles, weighted by how many texels each covers;
-// where the receiver is not behind every layer written in those tiles, its own tile is counted
-// texel by texel, each texel tested against the receiver's depth there.
+// threshold stratum once (caster.frag). The tiles' counts come precomputed (tiles.frag, in the
+// map's mip level log2(side)) and are blended bilinearly between the 2 x 2 nearest tiles,
+// weighted by how many texels each covers; where the receiver is not behind every layer written
+// in those tiles, its own tile is counted texel by texel, each texel tested against the
+// receiver's depth there.
 
 // A map texel seen from the receiver: 2D maps address texels directly, cube maps through the
 // face the receiver's direction selects (GL 4.5 table 8.19).
@@ -72,21 +73,27 @@ MapFace mapFace(ShadowSite s) {
 
 vec3 faceDirection(ShadowSite s, MapFace m, vec2 texel) { return cubeFaceDirection(m.face, texel / s.resolution); }
 
-vec4 rawTexel(ShadowSite s, MapFace m, vec2 texel) {
-    return s.cube ? shadowRawLodCube(s.slot, faceDirection(s, m, texel)) : shadowRawLod2D(s.slot, texel / s.resolution);
-}
-
 // The receiver's linear depth where its plane meets the light's ray through `texel`.
 float receiverAt(ShadowSite s, MapFace m, vec2 texel) {
     float windowDepth = s.cube ? cubeReceiverDepth(s, faceDirection(s, m, texel)) : tapReceiverDepth(s, texel - m.texel);
     return linearShadowDepth(s.light, windowDepth) * (1.0 - uStorageEpsilon);
 }
 
-vec4 tileStats(ShadowSite s, MapFace m, ivec2 tile, int side) {
-    int last = int(ceil(s.resolution / float(side))) - 1;
-    tile = clamp(tile, ivec2(0), ivec2(last));  // no neighbours across map (face) borders
-    if (!s.cube) return shadowTintFetch2D(s.slot, tile);
-    return shadowTintCube(s.slot, faceDirection(s, m, (vec2(tile) + 0.5) * float(side)));
+// The texel of mip level `level` that holds `texel` (texel units of level 0): at level
+// log2(side), the statistics of the tile around it.
+vec4 levelTexel(ShadowSite s, MapFace m, vec2 texel, int level) {
+    if (s.cube) return shadowRawLevelCube(s.slot, faceDirection(s, m, texel), float(level));
+    ivec2 last = (ivec2(s.resolution) >> level) - 1;  // clamped to the map's edge, as a sampler would
+    return shadowRawFetch2D(s.slot, clamp(ivec2(texel) >> level, ivec2(0), last), level);
+}
+
+// tiles.frag's packing: r = passing.r + M (covered mod 8), g = passing.g + M floor(covered / 8),
+// b = passing.b, with M = side² + 1. The half offset keeps floor exact under an approximate division.
+void tileCounts(vec4 stats, int side, out vec3 passing, out float covered) {
+    float m = float(side * side + 1);
+    vec2 high = floor((stats.rg + 0.5) / m);
+    passing = vec3(stats.rg - m * high, stats.b);
+    covered = high.x + 8.0 * high.y;
 }
 
 // Share of the receiver's footprint that a translucent layer in front of it covers: its 2 x 2
@@ -96,42 +103,19 @@ float ownCoverage(ShadowSite s, MapFace m) {
     vec2 centre = floor(t) + 1.0;  // between the 2 x 2 texels a gather reads
     vec4 nearest = s.cube ? shadowRawGatherAlphaCube(s.slot, faceDirection(s, m, centre))
                           : shadowRawGatherAlpha2D(s.slot, centre / s.resolution);
-    vec4 c = vec4(lessThan(nearest, vec4(receiverAt(s, m, m.texel))));
+    // The receiver's own depth: receiverAt at its own texel, where the plane adds nothing.
+    vec4 c = vec4(lessThan(nearest, vec4(linearShadowDepth(s.light, s.depth) * (1.0 - uStorageEpsilon))));
     vec2 f = fract(t);
     return mix(mix(c.w, c.z, f.x), mix(c.x, c.y, f.x), f.y);  // gather order: (0,1) (1,1) (1,0) (0,0)
-}
-
-// (passes per channel, 1) where a layer lies in front of the receiver at `texel`, else 0.
-vec4 coveredPasses(ShadowSite s, MapFace m, vec2 texel) {
-    vec4 stored = rawTexel(s, m, texel);
-    float receiver = receiverAt(s, m, texel);
-    if (stored.a >= receiver) return vec4(0.0);
-    return vec4(vec3(greaterThan(stored.rgb, vec3(receiver))), 1.0);
 }
 
 vec3 colouredByTiles(ShadowSite s, int side) {
     MapFace m = mapFace(s);
     float own = ownCoverage(s, m);
-    if (own <= 0.0) return vec3(1.0);  // no layer in front of the receiver's own texels
+    const int level = side == 8 ? 3 : 2;  // tiles.frag's level: log2(side)
     vec2 tileCoord = m.texel / float(side) - 0.5;
     ivec2 base = ivec2(floor(tileCoord));
     vec2 f = tileCoord - vec2(base);
-    // The 2 x 2 tiles' counts, fetched in a loop that breaks first thing where no layer covers the
-    // receiver: llvmpipe runs an if's body for every 8-pixel group (the return above saves
-    // nothing), but leaves a loop once no lane is left in it, so groups without colour fetch one
-    // tile instead of four. The bound comes from a uniform: an unrolled loop would not end early.
-    vec4 t00 = vec4(0.0), t10 = vec4(0.0), t01 = vec4(0.0), t11 = vec4(0.0);
-    int tiles = uTileSide > 0 ? 4 : 0;
-    for (int k = 0; k < tiles; ++k) {
-        if (own <= 0.0) break;
-        vec4 v = tileStats(s, m, base + ivec2(k & 1, k >> 1), side);
-        t00 = k == 0 ? v : t00;  // selects, not an array: llvmpipe spills dynamically indexed arrays
-        t10 = k == 1 ? v : t10;
-        t01 = k == 2 ? v : t01;
-        t11 = k == 3 ? v : t11;
-    }
-    vec4 countAndDepth = vec4(t00.a, t10.a, t01.a, t11.a);
-    vec4 covered = floor(countAndDepth), farthest = countAndDepth - covered;
     // The receiver's nearest depth over the four tiles: at one of their outer corners (it is planar).
     vec2 lo = vec2(base) * float(side), hi = lo + 2.0 * float(side);
     float nearest;
@@ -141,20 +125,48 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         vec2 corner = mix(hi, lo, greaterThan(s.depthSlope, vec2(0.0))) - m.texel;
         nearest = linearShadowDepth(s.light, s.depth + clamp(dot(s.depthSlope, corner), -0.01, 0.01)) * (1.0 - uStorageEpsilon);
     }
-    vec3 t;
-    vec4 w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y) * covered;
-    if (all(lessThan(farthest, vec4(nearest))) && dot(w, vec4(1.0)) > 0.0) {
-        vec4 ratio = w / dot(w, vec4(1.0));  // per covered texel of each tile
-        vec4 perTexel = ratio / max(covered, vec4(1.0));
-        t = perTexel.x * t00.rgb + perTexel.y * t10.rgb + perTexel.z * t01.rgb + perTexel.w * t11.rgb;
-    } else {
-        vec2 first = floor(m.texel / float(side)) * float(side);
-        vec4 acc = vec4(0.0);
-        // A uniform bound: an unrolled loop would run, masked, for every pixel on llvmpipe.
-        for (int j = 0; j < uTileSide; ++j)
-            for (int i = 0; i < uTileSide; ++i) acc += coveredPasses(s, m, first + vec2(i, j) + 0.5);
-        t = acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0);
+    int lastTile = int(ceil(s.resolution / float(side))) - 1;
+    // A resolution that is not a multiple of side leaves the last tile partial, and its counts
+    // outside the level: there the texels are counted.
+    int levelTiles = int(s.resolution) >> level;
+    vec2 first = floor(m.texel / float(side)) * float(side);  // the receiver's own tile
+    vec3 passing = vec3(0.0);
+    float covered = 0.0, farthest = 0.0;
+    vec4 acc = vec4(0.0);
+    bool tilesDecide = false;
+    // One loop, one fetch per pass: passes 0-3 read the 2 x 2 tiles' counts (level log2(side)),
+    // blended as sum(w passing) / sum(w covered) with w the bilinear weights; then, unless those
+    // decide, the rest count the own tile's texels (level 0). llvmpipe runs an if's both sides for
+    // every 8-pixel group and a loop's body at least once, but leaves a loop once no lane is left
+    // in it: a loop over tiles and another over texels cost a fetch each where no layer covers the
+    // receiver, this one costs one. The bound comes from a uniform: an unrolled loop would run
+    // every pass.
+    int passes = uTileSide > 0 ? 4 + uTileSide * uTileSide : 0;
+    for (int k = 0; k < passes; ++k) {
+        if (own <= 0.0) break;  // no layer in front of the receiver's own texels
+        if (k == 4) {
+            tilesDecide = farthest < nearest && covered > 0.0;
+            if (tilesDecide) break;
+        }
+        bool tile = k < 4;
+        ivec2 t = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), ivec2(lastTile));  // no neighbours across map (face) borders
+        bool missing = any(greaterThanEqual(t, ivec2(levelTiles)));
+        int e = k - 4;
+        vec2 texel = tile ? (vec2(min(t, ivec2(levelTiles - 1))) + 0.5) * float(side) : first + vec2(e % side, e / side) + 0.5;
+        vec4 v = levelTexel(s, m, texel, tile ? level : 0);
+        // A tile: its counts, bilinearly weighted.
+        vec3 p;
+        float c;
+        tileCounts(v, side, p, c);
+        float w = tile ? ((k & 1) != 0 ? f.x : 1.0 - f.x) * ((k & 2) != 0 ? f.y : 1.0 - f.y) : 0.0;
+        passing += w * p;
+        covered += w * c;
+        farthest = tile ? max(farthest, missing ? 2.0 : v.a) : farthest;
+        // A texel of the own tile: counted where a layer lies in front of the receiver there.
+        float receiver = receiverAt(s, m, texel);
+        acc += !tile && v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
     }
+    vec3 t = tilesDecide ? passing / covered : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
     return mix(vec3(1.0), t, own);
 }
 

@@ -32,12 +32,6 @@ vec4 shadowTint2D(int slot, vec2 uv) {
     SLOT_SWITCH_4(S)
 #undef S
 }
-// One texel of the tint unit's texture (a technique's own per-tile data in its place).
-vec4 shadowTintFetch2D(int slot, ivec2 texel) {
-#define S(i) texelFetch(uShadowTint[i], texel, 0)
-    SLOT_SWITCH_4(S)
-#undef S
-}
 vec4 shadowTintCube(int slot, vec3 dir) {
 #define S(i) textureLod(uShadowTintCube[i], dir, 0.0)
     SLOT_SWITCH_2(S)
@@ -62,6 +56,17 @@ vec4 shadowRaw2D(int slot, vec2 uv, vec2 dx, vec2 dy) {
 }
 vec4 shadowRawCube(int slot, vec3 dir, vec3 dx, vec3 dy) {
 #define S(i) textureGrad(uShadowRawCube[i], dir, dx, dy)
+    SLOT_SWITCH_2(S)
+#undef S
+}
+// One texel of a raw map's mip level `lod` (2D), and the texel a direction selects in a level (cube).
+vec4 shadowRawFetch2D(int slot, ivec2 texel, int lod) {
+#define S(i) texelFetch(uShadowRaw[i], texel, lod)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowRawLevelCube(int slot, vec3 dir, float lod) {
+#define S(i) textureLod(uShadowRawCube[i], dir, lod)
     SLOT_SWITCH_2(S)
 #undef S
 }
