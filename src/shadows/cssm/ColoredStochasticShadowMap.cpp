@@ -12,6 +12,10 @@
 
 namespace penumbra::shadows {
 
+// log2 of a tile's side (4 or 8): the colour map's mip level that holds the tiles' counts
+// (tiles.frag), and the bits of caster.frag's dither period.
+static int tileLevel(int side) { return std::countr_zero(static_cast<unsigned>(side)); }
+
 ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
     : variant_(variant), fp16_(variant == Variant::Rgb) {
     copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/copy.frag"});
@@ -50,8 +54,7 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     m.format = format;
     const int res = depth.resolution;
     // With tiles, their statistics live in the colour map's mip level log2(side) (tiles.frag).
-    const int tileLevel = side > 0 ? std::countr_zero(static_cast<unsigned>(side)) : 0;
-    const int levels = tileLevel + 1;  // resolutions are at least 16 texels (SceneFile)
+    const int levels = side > 0 ? tileLevel(side) + 1 : 1;  // resolutions are at least 16 texels (SceneFile)
     m.colour = m.cube ? gl::Texture::createCube(format, res, levels) : gl::Texture::create2D(format, res, res, levels);
     // Stochastic texels must not be averaged by the sampler; the lookup picks its level explicitly.
     m.colour.setFilter(levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST, GL_NEAREST);
@@ -77,7 +80,7 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
         // Level 0 alone as the tiles pass's input: it writes level log2(side) of the same texture.
         m.colourFaces.push_back(gl::Texture::view2D(m.colour, format, f, 0));
         m.tileTargets.push_back(
-            gl::Framebuffer::colourOnly(m.colour, m.cube ? f : -1, "coloured stochastic shadow map tiles", tileLevel));
+            gl::Framebuffer::colourOnly(m.colour, m.cube ? f : -1, "coloured stochastic shadow map tiles", tileLevel(side)));
     }
 }
 
@@ -97,7 +100,7 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     m.tileTargets[face].bind();
-    const int level = std::countr_zero(static_cast<unsigned>(m.tileSide));
+    const int level = tileLevel(m.tileSide);
     glViewport(0, 0, m.resolution >> level, m.resolution >> level);
     glEnable(GL_SCISSOR_TEST);
     glScissor(first.x, first.y, last.x - first.x, last.y - first.y);
@@ -125,7 +128,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     casters_.set("uXi", xi_);
     casters_.set("uIndependentChannels", variant_ == Variant::PerChannel ? 1 : 0);
     // The dither period matches the tile: log2 of its side.
-    casters_.set("uDitherBits", static_cast<int>(std::bit_width(static_cast<unsigned>(tileSide()))) - 1);
+    casters_.set("uDitherBits", tileLevel(tileSide()));
     casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
     // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
     // depth (tested, not written), MIN-blended per channel.

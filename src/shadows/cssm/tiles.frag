@@ -11,7 +11,7 @@
 // its answer (the lookup counts texel by texel otherwise).
 // Packing, exact in RGBA16F (integers up to 2048, and a depth the map itself stored):
 //   r = passing.r + M (covered mod 8), g = passing.g + M floor(covered / 8), b = passing.b,
-//   with M = side² + 1 (tileStatistics in lookup.glsl unpacks it).
+//   with M = side² + 1 (tileCounts in lookup.glsl unpacks it).
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
 uniform int uSide;  // 4 or 8
 layout(location = 0) out vec4 outStats;
