@@ -25,6 +25,52 @@ std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj) {
     return corners;
 }
 
+namespace {
+
+// Cyrus-Beck: the part of segment [a, b] in every half-space dot(plane, (p, 1)) >= 0.
+bool clipSegment(glm::vec3& a, glm::vec3& b, const std::array<glm::vec4, 6>& planes) {
+    float t0 = 0.0f, t1 = 1.0f;
+    for (const glm::vec4& plane : planes) {
+        const float da = glm::dot(plane, glm::vec4(a, 1.0f)), db = glm::dot(plane, glm::vec4(b, 1.0f));
+        if (da < 0.0f && db < 0.0f) return false;
+        if (da < 0.0f) t0 = std::max(t0, da / (da - db));
+        else if (db < 0.0f) t1 = std::min(t1, da / (da - db));
+        if (t0 > t1) return false;
+    }
+    const glm::vec3 d = b - a;
+    b = a + d * t1;
+    a = a + d * t0;
+    return true;
+}
+
+// Each edge of the solid with these corners, clipped to the planes; the ends that remain.
+void clippedEdges(const std::array<glm::vec3, 8>& corners, const std::array<glm::vec4, 6>& planes, std::vector<glm::vec3>& out) {
+    for (int i = 0; i < 8; ++i)
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (i & bit) continue;
+            glm::vec3 a = corners[static_cast<std::size_t>(i)], b = corners[static_cast<std::size_t>(i | bit)];
+            if (!clipSegment(a, b, planes)) continue;
+            out.push_back(a);
+            out.push_back(b);
+        }
+}
+
+}  // namespace
+
+std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::Bounds& box) {
+    std::vector<glm::vec3> points;
+    if (box.empty()) return points;
+    // Gribb & Hartmann: the clip volume's planes are w +- x, w +- y, w +- z of the matrix's rows.
+    const glm::mat4 t = glm::transpose(viewProj);
+    const std::array<glm::vec4, 6> frustum{t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+    const std::array<glm::vec4, 6> boxPlanes{glm::vec4(1, 0, 0, -box.min.x), glm::vec4(-1, 0, 0, box.max.x),
+                                             glm::vec4(0, 1, 0, -box.min.y), glm::vec4(0, -1, 0, box.max.y),
+                                             glm::vec4(0, 0, 1, -box.min.z), glm::vec4(0, 0, -1, box.max.z)};
+    clippedEdges(frustumCorners(viewProj), boxPlanes, points);
+    clippedEdges(box.corners(), frustum, points);
+    return points;
+}
+
 // Against shimmer and crawling as the camera moves (cf. Valient, "Stable rendering of cascaded
 // shadow maps", ShaderX6; CascadeFit.h): the box's size per axis only takes values on a ladder
 // of 2^(1/8) steps, so it stays put while the view changes a little, and its corner sits on a

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -38,6 +39,12 @@ glm::vec3 anyPerpendicular(const glm::vec3& d);
 
 // World-space corners of the clip volume of `viewProj` (bit 0: x, 1: y, 2: z; set = +1).
 std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj);
+
+// The points where the convex frustum of `viewProj` (world -> clip, e.g. one cascade's camera
+// slice) and `box` meet: each one's edges clipped to the other. Every vertex of the intersection
+// lies on an edge of one of the two (it is where three faces meet, two of them of the same
+// solid), so these points span it; none when the two do not meet.
+std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::Bounds& box);
 
 // The six view matrices of a cube map, in GL's face order (+X, -X, +Y, -Y, +Z, -Z).
 std::array<glm::mat4, 6> cubeFaceViews(const glm::vec3& position);

@@ -33,7 +33,7 @@ struct Road {  // 20 m wide, 200 m long, the camera low at one end looking along
 
 TEST(Warp, ClippedBodyIsTheFrustumInsideTheScene) {
     const Road r;
-    const auto body = clipFrustumToBox(r.viewProj(), r.bounds);
+    const auto body = frustumInsideBox(r.viewProj(), r.bounds);
     ASSERT_FALSE(body.empty());
     for (const auto& p : body) {
         EXPECT_GE(p.y, -1e-3f);
@@ -43,7 +43,7 @@ TEST(Warp, ClippedBodyIsTheFrustumInsideTheScene) {
     scene::Bounds sky;  // a box the camera looks away from
     sky.add(glm::vec3(-1, 0, 10));
     sky.add(glm::vec3(1, 1, 12));
-    EXPECT_TRUE(clipFrustumToBox(r.viewProj(), sky).empty());
+    EXPECT_TRUE(frustumInsideBox(r.viewProj(), sky).empty());
 }
 
 TEST(Warp, NearTexelsAreDenserThanOnePlainMap) {
@@ -73,7 +73,7 @@ TEST(Warp, LispsmUsesWimmersOptimalN) {
     ASSERT_TRUE(w.valid);
     EXPECT_NEAR(w.sinGamma, 1.0f, 1e-5f);
     // With sin γ = 1: n_opt = z_n + sqrt(z_n z_f), z_f = z_n + depth of the body along the view.
-    const auto body = clipFrustumToBox(r.viewProj(), r.bounds);
+    const auto body = frustumInsideBox(r.viewProj(), r.bounds);
     float zn = 1e9f, zmin = 1e9f, zmax = -1e9f;
     for (const auto& p : body) {
         zn = std::min(zn, -p.z);
@@ -130,7 +130,7 @@ TEST(Warp, EveryVisiblePointFallsInsideTheMapOverASweep) {
                     const WarpedView w = warp == 0 ? fitLispsm(r.sun, r.camera, r.viewProj(), r.bounds)
                                                    : fitPsm(r.sun, r.camera, r.viewProj(), r.bounds);
                     ASSERT_TRUE(w.valid);
-                    for (const auto& point : clipFrustumToBox(r.viewProj(), r.bounds)) {
+                    for (const auto& point : frustumInsideBox(r.viewProj(), r.bounds)) {
                         const glm::vec4 h = w.shadowMatrix * glm::vec4(point, 1.0f);
                         const glm::vec3 s = glm::vec3(h) / h.w;
                         ASSERT_GT(h.w, 0.0f) << (warp ? "psm" : "lispsm") << " az " << sunAz << " el " << sunEl << " pitch " << pitch;

@@ -30,10 +30,4 @@ struct Cascade {
 Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear,
                    float splitFar, const scene::Bounds& scene, int resolution, bool stabilize);
 
-// The points where the convex frustum of `viewProj` (world -> clip, e.g. one cascade's camera
-// slice) and `box` meet: each one's edges clipped to the other. Every vertex of the intersection
-// lies on an edge of one of the two (it is where three faces meet, two of them of the same
-// solid), so these points span it; none when the two do not meet.
-std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::Bounds& box);
-
 }  // namespace penumbra::shadows

@@ -12,21 +12,6 @@ namespace penumbra::shadows {
 
 namespace {
 
-using Polygon = std::vector<glm::vec3>;
-
-// Sutherland-Hodgman against the half-space dot(n, p) <= d.
-Polygon clipPolygon(const Polygon& in, const glm::vec3& n, float d) {
-    Polygon out;
-    for (std::size_t i = 0; i < in.size(); ++i) {
-        const glm::vec3& a = in[i];
-        const glm::vec3& b = in[(i + 1) % in.size()];
-        const float da = glm::dot(n, a) - d, db = glm::dot(n, b) - d;
-        if (da <= 0.0f) out.push_back(a);
-        if ((da < 0.0f) != (db < 0.0f) && da != db) out.push_back(a + (b - a) * (da / (da - db)));
-    }
-    return out;
-}
-
 glm::vec3 unproject(const glm::mat4& inverse, const glm::vec3& ndc) {
     const glm::vec4 w = inverse * glm::vec4(ndc, 1.0f);
     return glm::vec3(w) / w.w;
@@ -61,14 +46,14 @@ struct Body {
 };
 
 bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, Body& body) {
-    if (scene.objects.empty()) body.visible = clipFrustumToBox(cameraViewProj, scene.bounds);
+    if (scene.objects.empty()) body.visible = frustumInsideBox(cameraViewProj, scene.bounds);
     // Flat objects (a ground plane) have boxes of zero thickness, which clipping would whittle
     // down to nothing in rounding: every box gets a margin of a thousandth of the scene.
     const glm::vec3 margin(1e-3f * glm::length(scene.bounds.extent()));
     for (scene::Bounds box : scene.objects) {
         box.min -= margin;
         box.max += margin;
-        const auto part = clipFrustumToBox(cameraViewProj, box);
+        const auto part = frustumInsideBox(cameraViewProj, box);
         body.visible.insert(body.visible.end(), part.begin(), part.end());
     }
     if (body.visible.empty()) return false;
@@ -85,30 +70,6 @@ WarpedView finish(WarpedView w, const glm::mat4& viewProj) {
 }
 
 }  // namespace
-
-std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& viewProj, const scene::Bounds& box) {
-    if (box.empty()) return {};
-    const auto c = frustumCorners(viewProj);
-    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-    std::vector<glm::vec3> out;
-    for (const auto& face : kFaces) {
-        Polygon poly{c[face[0]], c[face[1]], c[face[2]], c[face[3]]};
-        for (int axis = 0; axis < 3 && !poly.empty(); ++axis) {
-            glm::vec3 n(0.0f);
-            n[axis] = 1.0f;
-            poly = clipPolygon(poly, n, box.max[axis]);
-            if (!poly.empty()) poly = clipPolygon(poly, -n, -box.min[axis]);
-        }
-        out.insert(out.end(), poly.begin(), poly.end());
-    }
-    // Box corners inside the frustum are vertices of the intersection too.
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p = box.corner(i);
-        const glm::vec4 q = viewProj * glm::vec4(p, 1.0f);
-        if (q.w > 0 && std::abs(q.x) <= q.w && std::abs(q.y) <= q.w && std::abs(q.z) <= q.w) out.push_back(p);
-    }
-    return out;
-}
 
 std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,
                                           const scene::Bounds& box) {

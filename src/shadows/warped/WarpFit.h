@@ -41,9 +41,6 @@ struct WarpedView {
     bool valid = false;     // false: the body is empty (the camera sees nothing of the scene)
 };
 
-// Vertices of the convex body (clip volume of `viewProj`) ∩ box.
-std::vector<glm::vec3> clipFrustumToBox(const glm::mat4& viewProj, const scene::Bounds& box);
-
 // `points` and, for each, where the ray towards the light leaves `box` (the casters' reach).
 std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,
                                           const scene::Bounds& box);
