@@ -114,12 +114,6 @@ TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
     EXPECT_LT(moved, 30) << "the box must not follow every sub-texel step";
 }
 
-}  // namespace
-}  // namespace penumbra::shadows
-
-namespace penumbra::shadows {
-namespace {
-
 // frustumInsideBox spans exactly the part of the frustum inside the box: the frustum's corners
 // when the box holds it, the box's corners when the frustum holds the box, nothing when apart,
 // and for a slab through the frustum the slab's cut of it.
