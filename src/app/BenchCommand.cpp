@@ -9,6 +9,7 @@
 #include "util/Log.h"
 
 #include <GitRevision.h>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -129,6 +130,17 @@ void printTable(const std::vector<bench::CaseResult>& results) {
     }
 }
 
+// One line per case label that ran on three or more scenes: shadow pass = a + b · triangles.
+void printScaling(const std::vector<bench::CaseResult>& results) {
+    const auto fits = bench::shadowPassScaling(results);
+    if (fits.empty()) return;
+    std::printf("shadow pass against triangles drawn into the maps (least squares over the scenes):\n");
+    for (const auto& f : fits)
+        std::printf("  %-30.30s %8.2f ms + %8.2f ms per million triangles   R² %.4f   (%zu scenes, %.0f-%.0f triangles)\n",
+                    f.label.c_str(), f.fit.intercept, f.fit.slope * 1e6, f.fit.r2, f.fit.count,
+                    *std::min_element(f.triangles.begin(), f.triangles.end()), *std::max_element(f.triangles.begin(), f.triangles.end()));
+}
+
 }  // namespace
 
 int runBench(const BenchJob& job) {
@@ -167,6 +179,7 @@ int runBench(const BenchJob& job) {
     const std::string warning = bench::writeBenchReport(job.outDir, results, job.settings, info, baseline, quality);
     if (!warning.empty()) log::warn("{}", warning);
     printTable(results);
+    printScaling(results);
     std::printf("wrote %s/bench.json, bench.csv and report.html\n", job.outDir.string().c_str());
     return 0;
 }

@@ -159,7 +159,9 @@ int main(int argc, char** argv) {
         "comma-separated shadow-map resolutions (default: each light's own)");
     {
         std::vector<std::string> suiteNames = bench::suiteNames();
-        benchCmd->add_option("--suite", bench.suites, "named suite(s): cssm-table, osg-tables, all-techniques, floor")
+        std::string names;
+        for (const auto& s : suiteNames) names += (names.empty() ? "" : ", ") + s;
+        benchCmd->add_option("--suite", bench.suites, "named suite(s): " + names)
             ->check(CLI::IsMember(suiteNames));
     }
     app::addSize(*benchCmd, bench.settings.width, bench.settings.height, "1280x720");

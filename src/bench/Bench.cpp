@@ -131,6 +131,7 @@ std::unique_ptr<Engine> makeEngine(scene::Scene& scene, const BenchCase& c, cons
     options.technique = c.technique;
     options.shadowResolution = c.shadowResolution;
     options.strictParameters = true;
+    if (c.redrawShadowMaps) options.reuseStillCasters = false;
     for (const auto& p : c.parameters) options.parameters.push_back(p);
     return std::make_unique<RendererEngine>(scene, options, settings.width, settings.height);
 }

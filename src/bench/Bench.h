@@ -26,6 +26,7 @@ struct BenchCase {
     int shadowResolution = 0;             // 0: each light's own
     shadows::ParameterValues parameters;  // on top of BenchSettings::render.parameters
     std::string label;                    // what tables call it; technique[, parameters] when empty
+    bool redrawShadowMaps = false;        // every map every frame, whatever BenchSettings::render says
 };
 
 struct BenchSettings {

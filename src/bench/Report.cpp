@@ -3,6 +3,7 @@
 #include "util/DataPaths.h"
 #include "util/OutputFiles.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,36 @@ namespace fs = std::filesystem;
 std::string caseLabel(const CaseResult& r) {
     if (!r.spec.label.empty()) return r.spec.label;
     return r.spec.shadowResolution > 0 ? r.technique + " " + std::to_string(r.spec.shadowResolution) : r.technique;
+}
+
+std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results) {
+    std::vector<ScalingFit> fits;
+    for (const CaseResult& r : results) {
+        const std::string label = caseLabel(r);
+        auto it = std::find_if(fits.begin(), fits.end(), [&](const ScalingFit& f) { return f.suite == r.spec.suite && f.label == label; });
+        if (it == fits.end()) it = fits.insert(fits.end(), ScalingFit{r.spec.suite, label, {}, {}, {}});
+        it->triangles.push_back(r.shadowTrianglesPerFrame);
+        it->shadowMs.push_back(r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median);
+    }
+    std::erase_if(fits, [](const ScalingFit& f) {
+        std::vector<double> distinct = f.triangles;
+        std::sort(distinct.begin(), distinct.end());
+        distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+        return distinct.size() < 3 || distinct.back() <= 0;
+    });
+    for (ScalingFit& f : fits) f.fit = fitLine(f.triangles, f.shadowMs);
+    return fits;
+}
+
+static json scalingJson(const std::vector<CaseResult>& results) {
+    json fits = json::array();
+    for (const ScalingFit& f : shadowPassScaling(results)) {
+        json points = json::array();
+        for (std::size_t i = 0; i < f.triangles.size(); ++i) points.push_back({{"triangles", f.triangles[i]}, {"shadow_ms", f.shadowMs[i]}});
+        fits.push_back({{"suite", f.suite}, {"label", f.label}, {"points", points},
+                        {"slope_ms_per_million_triangles", f.fit.slope * 1e6}, {"intercept_ms", f.fit.intercept}, {"r2", f.fit.r2}});
+    }
+    return fits;
 }
 
 static json summaryJson(const Summary& s) {
@@ -117,6 +148,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
           {"reuse_still_casters", settings.render.reuseStillCasters}, {"parameters", parameters}}},
         {"baseline", baseline ? json(baseline->value("created", "")) : json(nullptr)},
         {"cases", cases},
+        {"shadow_pass_scaling", scalingJson(results)},
     };
 }
 

@@ -53,4 +53,15 @@ std::string writeBenchReport(const std::filesystem::path& dir, const std::vector
 // The case's name in tables: its label, else technique (and resolution when set).
 std::string caseLabel(const CaseResult& r);
 
+// Shadow-pass time against the triangles drawn into the maps, for each suite and case label that
+// ran on at least three scenes drawing different numbers of triangles: one least-squares line
+// over its scenes (the speed issue asks for R² ≥ 0.98 from 10k to 1M triangles; see the
+// triangle-scaling suite). Labels that draw no map (none) are left out.
+struct ScalingFit {
+    std::string suite, label;
+    std::vector<double> triangles, shadowMs;  // per scene: triangles drawn per frame, shadow pass GPU median
+    LineFit fit;                              // shadowMs against triangles
+};
+std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results);
+
 }  // namespace penumbra::bench

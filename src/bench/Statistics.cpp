@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 namespace penumbra::bench {
 
@@ -23,6 +24,31 @@ Summary summarize(std::vector<double> samples) {
     s.median = n % 2 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
     s.p95 = nearestRank(samples, 0.95);
     return s;
+}
+
+LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y) {
+    if (x.size() != y.size()) throw std::invalid_argument("fitLine: x and y differ in length");
+    LineFit fit;
+    fit.count = x.size();
+    if (x.empty()) return fit;
+    const double n = static_cast<double>(x.size());
+    const double meanX = std::accumulate(x.begin(), x.end(), 0.0) / n, meanY = std::accumulate(y.begin(), y.end(), 0.0) / n;
+    double sxx = 0, sxy = 0, syy = 0;  // centred sums: no cancellation between large totals
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        sxx += (x[i] - meanX) * (x[i] - meanX);
+        sxy += (x[i] - meanX) * (y[i] - meanY);
+        syy += (y[i] - meanY) * (y[i] - meanY);
+    }
+    fit.slope = sxx > 0 ? sxy / sxx : 0.0;
+    fit.intercept = meanY - fit.slope * meanX;
+    if (sxx <= 0) return fit;
+    double residual = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const double e = y[i] - (fit.intercept + fit.slope * x[i]);
+        residual += e * e;
+    }
+    fit.r2 = syy > 0 ? 1.0 - residual / syy : 1.0;
+    return fit;
 }
 
 }  // namespace penumbra::bench

@@ -132,7 +132,7 @@ fs::path writeGridScene(const fs::path& dir, const std::string& name, std::size_
     return json;
 }
 
-std::vector<std::string> suiteNames() { return {"cssm-table", "osg-tables", "all-techniques", "floor"}; }
+std::vector<std::string> suiteNames() { return {"cssm-table", "osg-tables", "all-techniques", "floor", "triangle-scaling"}; }
 
 std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& sceneDir) {
     std::vector<BenchCase> cases;
@@ -162,6 +162,17 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
             for (const auto& t : shadows::techniqueRegistry()) cases.push_back(make(suite, scene, t.name, 0));
     } else if (suite == "floor") {
         for (const char* technique : {kFloorDepth, kFloorLambert, "none", "hard"}) cases.push_back(make(suite, defaultScene(), technique, 2048));
+    } else if (suite == "triangle-scaling") {
+        // The same grid from 10k to 1M triangles, every map redrawn every frame (the grid stands
+        // still, so kept maps would cost nothing): the bench fits shadow pass against triangles.
+        for (const std::size_t triangles : {10000u, 30000u, 100000u, 300000u, 1000000u}) {
+            const fs::path scene = writeGridScene(sceneDir, "grid_" + std::to_string(triangles / 1000) + "k", triangles, false);
+            for (const char* technique : {"hard", "cascaded", "lispsm", "vsm"}) {
+                BenchCase c = make(suite, scene, technique, 0);
+                c.redrawShadowMaps = true;
+                cases.push_back(std::move(c));
+            }
+        }
     } else {
         std::string known;
         for (const auto& s : suiteNames()) known += (known.empty() ? "" : ", ") + s;

@@ -132,3 +132,31 @@ endif()
 execute_process(COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --window-size=1400,2200
                         "--screenshot=${OUT}/report_screenshot.png" "file://${OUT}/report.html"
                 OUTPUT_QUIET ERROR_QUIET)
+
+# Across scenes: the same technique on three generated grids gets a least-squares line of shadow
+# pass against triangles drawn, in bench.json and on stdout; `none` draws no map and gets none.
+run_penumbra("${OUT}/scaling" scaling "${PENUMBRA}" bench --grid-scene 1000 --grid-scene 20000 --grid-scene 60000
+             --techniques hard,none --redraw-shadow-maps --size 64x48 --frames 3 --warmup-seconds 0 --no-images
+             --out "${OUT}/scaling")
+file(READ "${OUT}/scaling/bench.json" doc)
+string(JSON fits LENGTH "${doc}" shadow_pass_scaling)
+string(JSON label GET "${doc}" shadow_pass_scaling 0 label)
+string(JSON points LENGTH "${doc}" shadow_pass_scaling 0 points)
+if(NOT fits EQUAL 1 OR NOT label STREQUAL "hard" OR NOT points EQUAL 3)
+  message(FATAL_ERROR "bench.json: ${fits} scaling fit(s), the first '${label}' over ${points} scenes; expected one, hard's, over 3")
+endif()
+foreach(i 0 1 2)
+  math(EXPR caseIndex "2 * ${i}")  # hard, none per scene
+  string(JSON drawn GET "${doc}" cases ${caseIndex} shadow_triangles_per_frame)
+  string(JSON fitted GET "${doc}" shadow_pass_scaling 0 points ${i} triangles)
+  if(NOT drawn EQUAL fitted OR drawn LESS 1000)
+    message(FATAL_ERROR "scaling point ${i}: ${fitted} triangles, the case drew ${drawn}")
+  endif()
+endforeach()
+string(JSON r2 GET "${doc}" shadow_pass_scaling 0 r2)
+if(r2 LESS 0 OR r2 GREATER 1)
+  message(FATAL_ERROR "scaling fit: R² ${r2} outside [0, 1]")
+endif()
+if(NOT scaling MATCHES "shadow pass against triangles drawn[^\n]*\n +hard +[0-9.-]+ ms \\+ +[0-9.-]+ ms per million triangles +R² ")
+  message(FATAL_ERROR "stdout lacks hard's scaling line")
+endif()

@@ -1,0 +1,78 @@
+// The bench's least-squares line (shadow pass against triangles drawn) against values worked out
+// by hand, and which cases the report fits.
+#include "bench/Report.h"
+#include "bench/Statistics.h"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::bench {
+namespace {
+
+TEST(FitLine, PointsOnALineGiveItWithRSquaredOne) {
+    const LineFit f = fitLine({1, 2, 3, 4}, {5, 8, 11, 14});  // y = 2 + 3x
+    EXPECT_EQ(f.count, 4u);
+    EXPECT_NEAR(f.slope, 3.0, 1e-12);
+    EXPECT_NEAR(f.intercept, 2.0, 1e-12);
+    EXPECT_NEAR(f.r2, 1.0, 1e-12);
+}
+
+TEST(FitLine, ScatteredPointsGiveTheLeastSquaresLineAndTheShareOfVarianceItExplains) {
+    // x̄ = 3, ȳ = 4: Sxy = 6, Sxx = 10, so slope 0.6 and intercept 2.2; the residuals
+    // (-0.8, 0.6, 1, -0.6, -0.2) square to 2.4 against a total of 6: R² = 0.6.
+    const LineFit f = fitLine({1, 2, 3, 4, 5}, {2, 4, 5, 4, 5});
+    EXPECT_NEAR(f.slope, 0.6, 1e-12);
+    EXPECT_NEAR(f.intercept, 2.2, 1e-12);
+    EXPECT_NEAR(f.r2, 0.6, 1e-12);
+}
+
+TEST(FitLine, MillionsOfTrianglesKeepTheirPrecision) {
+    // Centred sums: x around 1e6 with ms around 100 must not lose the slope to cancellation.
+    const LineFit f = fitLine({1e6, 1e6 + 1, 1e6 + 2}, {100.0, 100.5, 101.0});
+    EXPECT_NEAR(f.slope, 0.5, 1e-9);
+    EXPECT_NEAR(f.r2, 1.0, 1e-9);
+}
+
+TEST(FitLine, OneDistinctXExplainsNothing) {
+    const LineFit f = fitLine({7, 7, 7}, {1, 2, 6});
+    EXPECT_EQ(f.slope, 0.0);
+    EXPECT_NEAR(f.intercept, 3.0, 1e-12);
+    EXPECT_EQ(f.r2, 0.0);
+    EXPECT_THROW(fitLine({1, 2}, {1}), std::invalid_argument);
+}
+
+CaseResult result(const std::string& suite, const std::string& technique, double triangles, double shadowMs) {
+    CaseResult r;
+    r.spec.suite = suite;
+    r.technique = technique;
+    r.shadowTrianglesPerFrame = triangles;
+    r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median = shadowMs;
+    return r;
+}
+
+TEST(ShadowPassScaling, FitsEachLabelThatDrewThreeDifferentTriangleCounts) {
+    std::vector<CaseResult> results;
+    for (const double t : {1e4, 1e5, 1e6}) {
+        results.push_back(result("triangle-scaling", "hard", t, 1.0 + 1e-4 * t));  // 0.1 ms per 1000 triangles
+        results.push_back(result("triangle-scaling", "none", 0, 0.05));           // draws no map
+        results.push_back(result("other", "hard", t, 2.0 + 2e-4 * t));            // another suite: its own line
+    }
+    results.push_back(result("triangle-scaling", "cascaded", 1e4, 3));  // two scenes only
+    results.push_back(result("triangle-scaling", "cascaded", 1e5, 9));
+    results.push_back(result("triangle-scaling", "lispsm", 1e5, 4));    // three runs, one triangle count
+    results.push_back(result("triangle-scaling", "lispsm", 1e5, 5));
+    results.push_back(result("triangle-scaling", "lispsm", 1e5, 6));
+
+    const std::vector<ScalingFit> fits = shadowPassScaling(results);
+    ASSERT_EQ(fits.size(), 2u);
+    EXPECT_EQ(fits[0].suite, "triangle-scaling");
+    EXPECT_EQ(fits[0].label, "hard");
+    EXPECT_EQ(fits[0].fit.count, 3u);
+    EXPECT_NEAR(fits[0].fit.slope * 1e6, 100.0, 1e-9);  // ms per million triangles
+    EXPECT_NEAR(fits[0].fit.intercept, 1.0, 1e-9);
+    EXPECT_NEAR(fits[0].fit.r2, 1.0, 1e-12);
+    EXPECT_EQ(fits[1].suite, "other");
+    EXPECT_NEAR(fits[1].fit.slope * 1e6, 200.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace penumbra::bench
