@@ -104,7 +104,7 @@ std::optional<bench::Quality> measureQuality(const BenchJob& job, const std::vec
     q.reference = cmp.shade(cmp.referenceVisibility());
     std::set<std::string> done;
     for (const auto& r : results) {
-        if (r.spec.scene != scenePath || r.technique == bench::kFloorDepth || r.technique == bench::kFloorLambert ||
+        if (r.spec.scene != scenePath || bench::isFloor(r.technique) ||
             !done.insert(r.technique).second)
             continue;
         const reference::TechniqueScore s = cmp.evaluate(r.technique, r.spec.shadowResolution, 0, r.spec.parameters);

@@ -137,9 +137,10 @@ int main(int argc, char** argv) {
             std::stringstream in(list);
             for (std::string name; std::getline(in, name, ',');) {
                 if (name.empty()) continue;
-                if (name != "all" && name != bench::kFloorDepth && name != bench::kFloorLambert && !shadows::isKnownTechnique(name))
+                if (name != "all" && !bench::isFloor(name) && !shadows::isKnownTechnique(name))
                     throw CLI::ValidationError("--techniques", "unknown shadow technique '" + name + "'; known: all, " +
-                                                                   shadows::knownTechniqueNames() + ", floor-depth, floor-lambert");
+                                                                   shadows::knownTechniqueNames() + ", " + bench::kFloorDepth + ", " +
+                                                                   bench::kFloorLambert + ", " + bench::kFloorUnshadowed);
                 bench.techniques.push_back(name);
             }
         },

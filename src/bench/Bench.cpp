@@ -121,11 +121,21 @@ bool settled(const std::vector<double>& frameMs) {
     return std::abs(last - before) <= 0.05 * before;
 }
 
+}  // namespace
+
+bool isFloor(const std::string& technique) {
+    return technique == kFloorDepth || technique == kFloorLambert || technique == kFloorUnshadowed;
+}
+
+namespace {
+
 std::unique_ptr<Engine> makeEngine(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings) {
-    if (c.technique == kFloorDepth || c.technique == kFloorLambert) {
+    if (isFloor(c.technique)) {
         const int res = c.shadowResolution > 0 ? c.shadowResolution : (scene.lights.empty() ? 2048 : scene.lights.front().shadow.resolution);
-        return std::make_unique<FloorEngine>(scene, c.technique == kFloorDepth ? FloorRenderer::Mode::DepthOnly : FloorRenderer::Mode::Lambert,
-                                             res, c.technique);
+        const FloorRenderer::Mode mode = c.technique == kFloorDepth     ? FloorRenderer::Mode::DepthOnly
+                                         : c.technique == kFloorLambert ? FloorRenderer::Mode::Lambert
+                                                                        : FloorRenderer::Mode::Unshadowed;
+        return std::make_unique<FloorEngine>(scene, mode, res, c.technique);
     }
     render::RenderOptions options = settings.render;
     options.technique = c.technique;

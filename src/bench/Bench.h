@@ -18,11 +18,14 @@ namespace penumbra::bench {
 // Pseudo-techniques measured beside the real ones: the floor (bench/FloorRenderer.h).
 inline constexpr const char* kFloorDepth = "floor-depth";
 inline constexpr const char* kFloorLambert = "floor-lambert";
+inline constexpr const char* kFloorUnshadowed = "floor-unshadowed";
+// Whether `technique` names one of the floor's pseudo-techniques above.
+bool isFloor(const std::string& technique);
 
 struct BenchCase {
     std::string suite;                    // "" outside a named suite
     std::filesystem::path scene;
-    std::string technique;                // a registry name, kFloorDepth or kFloorLambert
+    std::string technique;                // a registry name or a floor (isFloor)
     int shadowResolution = 0;             // 0: each light's own
     shadows::ParameterValues parameters;  // on top of BenchSettings::render.parameters
     std::string label;                    // what tables call it; technique[, parameters] when empty

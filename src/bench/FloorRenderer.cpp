@@ -11,8 +11,10 @@ FloorRenderer::FloorRenderer(const scene::Scene& scene, Mode mode, int shadowRes
     : scene_(scene), mode_(mode), resolution_(shadowResolution), gpu_(scene) {
     if (scene.lights.empty()) throw std::invalid_argument("the floor passes need a scene with at least one light");
     depthProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert", .fragment = "src/bench/glsl/floor_depth.frag"});
-    if (mode == Mode::Lambert)
-        lambertProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert", .fragment = "src/bench/glsl/floor_lambert.frag"});
+    if (mode != Mode::DepthOnly)
+        lambertProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert",
+                                              .fragment = "src/bench/glsl/floor_lambert.frag",
+                                              .defines = {std::string("SHADOWED ") + (mode == Mode::Lambert ? "1" : "0")}});
     depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution_, resolution_);
     depthFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     depthFbo_.setNoColor();
@@ -35,11 +37,11 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
 
     timer_.beginFrame(frame_++);
     timer_.begin(render::Pass::Shadow);
-    {
+    triangles_ = 0;
+    if (mode_ != Mode::Unshadowed) {
         gl::ScopedPassState state(gl::PassState::depthOnly());
         depthFbo_.beginDepthPass(resolution_, resolution_);
         depthProgram_.set("uViewProj", space.viewProj[0]);
-        triangles_ = 0;
         for (const render::Draw& d : draws)
             if (d.castsShadow) {
                 gpu_.draw(d, depthProgram_);
@@ -53,7 +55,7 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
     glViewport(0, 0, width, height);
     const float clear[4] = {0.05f, 0.06f, 0.08f, 1.0f}, farDepth = 1.0f;
     glClearNamedFramebufferfv(target, GL_COLOR, 0, clear);
-    if (mode_ == Mode::Lambert) {
+    if (mode_ != Mode::DepthOnly) {
         gl::ScopedPassState state(gl::PassState::depthOnly());
         glClearNamedFramebufferfv(target, GL_DEPTH, 0, &farDepth);
         depth_.bind(0);

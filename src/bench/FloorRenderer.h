@@ -3,6 +3,7 @@
 // expensive way a shadowed frame can be drawn, with none of the renderer's generality.
 // - DepthOnly: one depth-only raster of every caster into the first light's map.
 // - Lambert: that, then one camera pass of Lambert times one sampler2DShadow lookup into RGBA8.
+// - Unshadowed: the camera pass of Lambert alone, no map: the floor of a shadowless frame.
 // Timed with the renderer's own query ring (Shadow and Opaque passes), so ratios are like for like.
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
@@ -16,7 +17,7 @@ namespace penumbra::bench {
 
 class FloorRenderer {
 public:
-    enum class Mode { DepthOnly, Lambert };
+    enum class Mode { DepthOnly, Lambert, Unshadowed };
     // Uses the scene's first light (a directional one's box, a spot's cone; a point light's
     // first cube face). Throws InputError-like std::invalid_argument when the scene has no light.
     FloorRenderer(const scene::Scene& scene, Mode mode, int shadowResolution);
@@ -25,7 +26,7 @@ public:
     void render(float time, const scene::Camera& camera, int width, int height);
     GLuint framebuffer() const { return cameraFbo_.id(); }
     render::FrameTimer& timer() { return timer_; }
-    std::size_t shadowMemoryBytes() const { return depth_.memoryBytes(); }
+    std::size_t shadowMemoryBytes() const { return mode_ == Mode::Unshadowed ? 0 : depth_.memoryBytes(); }
     std::size_t trianglesPerFrame() const { return triangles_; }
 
 private:

@@ -161,7 +161,8 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
         for (const fs::path& scene : {defaultScene(), millionScene(sceneDir)})
             for (const auto& t : shadows::techniqueRegistry()) cases.push_back(make(suite, scene, t.name, 0));
     } else if (suite == "floor") {
-        for (const char* technique : {kFloorDepth, kFloorLambert, "none", "hard"}) cases.push_back(make(suite, defaultScene(), technique, 2048));
+        for (const char* technique : {kFloorDepth, kFloorLambert, kFloorUnshadowed, "none", "hard"})
+            cases.push_back(make(suite, defaultScene(), technique, 2048));
     } else if (suite == "triangle-scaling") {
         // The same grid from 10k to 1M triangles, every map redrawn every frame (the grid stands
         // still, so kept maps would cost nothing): the bench fits shadow pass against triangles.

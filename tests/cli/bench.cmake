@@ -134,9 +134,10 @@ execute_process(COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless 
                 OUTPUT_QUIET ERROR_QUIET)
 
 # Across scenes: the same technique on three generated grids gets a least-squares line of shadow
-# pass against triangles drawn, in bench.json and on stdout; `none` draws no map and gets none.
+# pass against triangles drawn, in bench.json and on stdout; `none` and the unshadowed floor draw
+# no map and get none.
 run_penumbra("${OUT}/scaling" scaling "${PENUMBRA}" bench --grid-scene 1000 --grid-scene 20000 --grid-scene 60000
-             --techniques hard,none --redraw-shadow-maps --size 64x48 --frames 3 --warmup-seconds 0 --no-images
+             --techniques hard,none,floor-unshadowed --redraw-shadow-maps --size 64x48 --frames 3 --warmup-seconds 0 --no-images
              --out "${OUT}/scaling")
 file(READ "${OUT}/scaling/bench.json" doc)
 string(JSON fits LENGTH "${doc}" shadow_pass_scaling)
@@ -146,11 +147,21 @@ if(NOT fits EQUAL 1 OR NOT label STREQUAL "hard" OR NOT points EQUAL 3)
   message(FATAL_ERROR "bench.json: ${fits} scaling fit(s), the first '${label}' over ${points} scenes; expected one, hard's, over 3")
 endif()
 foreach(i 0 1 2)
-  math(EXPR caseIndex "2 * ${i}")  # hard, none per scene
+  math(EXPR caseIndex "3 * ${i}")  # hard, none, floor-unshadowed per scene
   string(JSON drawn GET "${doc}" cases ${caseIndex} shadow_triangles_per_frame)
   string(JSON fitted GET "${doc}" shadow_pass_scaling 0 points ${i} triangles)
   if(NOT drawn EQUAL fitted OR drawn LESS 1000)
     message(FATAL_ERROR "scaling point ${i}: ${fitted} triangles, the case drew ${drawn}")
+  endif()
+  # The unshadowed floor: a camera pass only, no map, no triangles into one.
+  math(EXPR caseIndex "3 * ${i} + 2")
+  string(JSON technique GET "${doc}" cases ${caseIndex} technique)
+  string(JSON memory GET "${doc}" cases ${caseIndex} shadow_memory_bytes)
+  string(JSON drawn GET "${doc}" cases ${caseIndex} shadow_triangles_per_frame)
+  string(JSON opaque GET "${doc}" cases ${caseIndex} pass_gpu_ms opaque median)
+  if(NOT technique STREQUAL "floor-unshadowed" OR NOT memory EQUAL 0 OR NOT drawn EQUAL 0 OR NOT opaque GREATER 0)
+    message(FATAL_ERROR "case ${caseIndex} (${technique}): ${memory} map bytes, ${drawn} triangles into maps, camera pass ${opaque} ms; "
+                        "expected floor-unshadowed with 0, 0 and > 0")
   endif()
 endforeach()
 string(JSON r2 GET "${doc}" shadow_pass_scaling 0 r2)
