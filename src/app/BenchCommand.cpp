@@ -141,6 +141,21 @@ void printScaling(const std::vector<bench::CaseResult>& results) {
                     *std::min_element(f.triangles.begin(), f.triangles.end()), *std::max_element(f.triangles.begin(), f.triangles.end()));
 }
 
+// Each case against the floor of its scene, where the floor ran beside it.
+void printFloorRatios(const std::vector<bench::CaseResult>& results) {
+    const auto ratios = bench::floorRatios(results);
+    if (ratios.empty()) return;
+    std::printf("against the floor (same scene and map size; frame: wall-clock means, shadow pass: GPU medians):\n");
+    for (const auto& q : ratios) {
+        std::printf("  %-30.30s @%-14.14s", q.label.c_str(), q.sceneName.c_str());
+        if (!q.frameFloor.empty()) std::printf("  frame %6.2fx %s", q.frame, q.frameFloor.c_str());
+        if (q.shadowPass > 0)
+            std::printf("  shadow pass %6.2fx %s (%zu shadowed light%s; the floor draws 1)", q.shadowPass, bench::kFloorDepth, q.lights,
+                        q.lights == 1 ? "" : "s");
+        std::printf("\n");
+    }
+}
+
 }  // namespace
 
 int runBench(const BenchJob& job) {
@@ -180,6 +195,7 @@ int runBench(const BenchJob& job) {
     if (!warning.empty()) log::warn("{}", warning);
     printTable(results);
     printScaling(results);
+    printFloorRatios(results);
     std::printf("wrote %s/bench.json, bench.csv and report.html\n", job.outDir.string().c_str());
     return 0;
 }

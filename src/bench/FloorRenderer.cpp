@@ -10,7 +10,7 @@ namespace penumbra::bench {
 FloorRenderer::FloorRenderer(const scene::Scene& scene, Mode mode, int shadowResolution)
     : scene_(scene), mode_(mode), resolution_(shadowResolution), gpu_(scene) {
     if (scene.lights.empty()) throw std::invalid_argument("the floor passes need a scene with at least one light");
-    depthProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert", .fragment = "src/bench/glsl/floor_depth.frag"});
+    depthProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor_depth.vert", .fragment = "src/bench/glsl/floor_depth.frag"});
     if (mode != Mode::DepthOnly)
         lambertProgram_ = gl::Program::build({.vertex = "src/bench/glsl/floor.vert",
                                               .fragment = "src/bench/glsl/floor_lambert.frag",

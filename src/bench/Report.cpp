@@ -37,6 +37,37 @@ std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results
     return fits;
 }
 
+std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
+    const auto floorCase = [&](const CaseResult& r, const char* floor) -> const CaseResult* {
+        for (const CaseResult& f : results)
+            if (f.technique == floor && f.spec.scene == r.spec.scene && f.spec.shadowResolution == r.spec.shadowResolution) return &f;
+        return nullptr;
+    };
+    const auto shadow = [](const CaseResult& r) { return r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median; };
+    std::vector<FloorRatio> ratios;
+    for (const CaseResult& r : results) {
+        if (isFloor(r.technique)) continue;
+        FloorRatio q{caseLabel(r), r.sceneName, "", 0, 0, r.resolutions.size()};
+        const bool mapless = r.shadowMemoryBytes == 0;
+        if (const CaseResult* f = floorCase(r, mapless ? kFloorUnshadowed : kFloorLambert); f && f->frameMs.mean > 0) {
+            q.frameFloor = f->technique;
+            q.frame = r.frameMs.mean / f->frameMs.mean;
+        }
+        if (const CaseResult* f = floorCase(r, kFloorDepth); f && !mapless && shadow(*f) > 0) q.shadowPass = shadow(r) / shadow(*f);
+        if (!q.frameFloor.empty() || q.shadowPass > 0) ratios.push_back(q);
+    }
+    return ratios;
+}
+
+static json floorRatiosJson(const std::vector<CaseResult>& results) {
+    json rows = json::array();
+    for (const FloorRatio& q : floorRatios(results))
+        rows.push_back({{"label", q.label}, {"scene_name", q.sceneName}, {"frame_floor", q.frameFloor}, {"frame_ratio", q.frame},
+                        {"shadow_pass_ratio_to_floor_depth", q.shadowPass},
+                        {"shadowed_lights", q.lights}});
+    return rows;
+}
+
 static json scalingJson(const std::vector<CaseResult>& results) {
     json fits = json::array();
     for (const ScalingFit& f : shadowPassScaling(results)) {
@@ -149,6 +180,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
         {"baseline", baseline ? json(baseline->value("created", "")) : json(nullptr)},
         {"cases", cases},
         {"shadow_pass_scaling", scalingJson(results)},
+        {"floor_ratios", floorRatiosJson(results)},
     };
 }
 

@@ -64,4 +64,17 @@ struct ScalingFit {
 };
 std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results);
 
+// Each case against the floor run on the same scene at the same map size (the speed issue's
+// "≤ 1.2× the bare program"): its wall-clock frame ÷ floor-unshadowed's when it draws no map
+// (none), else ÷ floor-lambert's; its shadow pass (GPU median) ÷ floor-depth's. 0 where that floor
+// case did not run. Floor cases themselves get no row. The floor draws the first light's map
+// only: `lights` says how many the case drew.
+struct FloorRatio {
+    std::string label, sceneName;
+    std::string frameFloor;  // the floor case the frame is divided by ("" when none ran)
+    double frame = 0, shadowPass = 0;
+    std::size_t lights = 0;  // shadowed lights of the case
+};
+std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results);
+
 }  // namespace penumbra::bench

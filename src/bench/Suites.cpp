@@ -163,6 +163,10 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
     } else if (suite == "floor") {
         for (const char* technique : {kFloorDepth, kFloorLambert, kFloorUnshadowed, "none", "hard"})
             cases.push_back(make(suite, defaultScene(), technique, 2048));
+        // The floor redraws its map every frame; hard keeps what still casters drew unless told.
+        BenchCase redrawn = make(suite, defaultScene(), "hard", 2048, {}, "hard 2048, maps redrawn");
+        redrawn.redrawShadowMaps = true;
+        cases.push_back(std::move(redrawn));
     } else if (suite == "triangle-scaling") {
         // The same grid from 10k to 1M triangles, every map redrawn every frame (the grid stands
         // still, so kept maps would cost nothing): the bench fits shadow pass against triangles.

@@ -7,7 +7,7 @@
 //   shadows, SM / PCF soft / cascaded (PSSM) / LiSPSM at 1024, LiSPSM tiles 1x1 2x2 3x3, memory.
 // - all-techniques: every technique on the default scene and on a ~1M-triangle scene.
 // - floor: the bare depth-only raster, the bare Lambert + one-lookup frame and the bare unshadowed
-//   Lambert frame beside none and hard.
+//   Lambert frame beside none and hard (with kept maps, and with every map redrawn as the floor's).
 // - triangle-scaling: hard, cascaded, lispsm and vsm on the generated grid at 10k, 30k, 100k,
 //   300k and 1M triangles, every map redrawn every frame; the report fits each technique's shadow
 //   pass against the triangles it drew (shadowPassScaling, Report.h).

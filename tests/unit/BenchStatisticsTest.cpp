@@ -74,5 +74,35 @@ TEST(ShadowPassScaling, FitsEachLabelThatDrewThreeDifferentTriangleCounts) {
     EXPECT_NEAR(fits[1].fit.slope * 1e6, 200.0, 1e-9);
 }
 
+CaseResult floorCase(const std::string& technique, const std::string& scene, double frameMs, double shadowMs, std::size_t memory) {
+    CaseResult r = result("floor", technique, 0, shadowMs);
+    r.spec.scene = scene;
+    r.sceneName = scene;
+    r.frameMs.mean = frameMs;
+    r.shadowMemoryBytes = memory;
+    return r;
+}
+
+TEST(FloorRatios, DivideEachCaseByTheFloorOfItsOwnSceneAndKind) {
+    CaseResult hardWithTwoLights = floorCase("hard", "a", 50, 2, 48);
+    hardWithTwoLights.resolutions = {2048, 1024};
+    const std::vector<CaseResult> results{
+        floorCase(kFloorDepth, "a", 6, 4, 16), floorCase(kFloorLambert, "a", 20, 4, 16), floorCase(kFloorUnshadowed, "a", 5, 0, 0),
+        floorCase("none", "a", 30, 0, 0),      hardWithTwoLights,
+        floorCase("hard", "b", 70, 9, 48),  // no floor ran on scene b
+    };
+    const std::vector<FloorRatio> ratios = floorRatios(results);
+    ASSERT_EQ(ratios.size(), 2u);
+    EXPECT_EQ(ratios[0].label, "none");  // no map: against the unshadowed floor, no shadow pass ratio
+    EXPECT_EQ(ratios[0].frameFloor, kFloorUnshadowed);
+    EXPECT_DOUBLE_EQ(ratios[0].frame, 6.0);
+    EXPECT_EQ(ratios[0].shadowPass, 0.0);
+    EXPECT_EQ(ratios[1].label, "hard");
+    EXPECT_EQ(ratios[1].frameFloor, kFloorLambert);
+    EXPECT_DOUBLE_EQ(ratios[1].frame, 2.5);
+    EXPECT_DOUBLE_EQ(ratios[1].shadowPass, 0.5);
+    EXPECT_EQ(ratios[1].lights, 2u);
+}
+
 }  // namespace
 }  // namespace penumbra::bench
