@@ -137,10 +137,11 @@ int main(int argc, char** argv) {
             std::stringstream in(list);
             for (std::string name; std::getline(in, name, ',');) {
                 if (name.empty()) continue;
-                if (name != "all" && !bench::isFloor(name) && !shadows::isKnownTechnique(name))
-                    throw CLI::ValidationError("--techniques", "unknown shadow technique '" + name + "'; known: all, " +
-                                                                   shadows::knownTechniqueNames() + ", " + bench::kFloorDepth + ", " +
-                                                                   bench::kFloorLambert + ", " + bench::kFloorUnshadowed);
+                if (name != "all" && !bench::isFloor(name) && !shadows::isKnownTechnique(name)) {
+                    std::string known = "all, " + shadows::knownTechniqueNames();
+                    for (const char* floor : bench::kFloors) known += std::string(", ") + floor;
+                    throw CLI::ValidationError("--techniques", "unknown shadow technique '" + name + "'; known: " + known);
+                }
                 bench.techniques.push_back(name);
             }
         },

@@ -5,6 +5,7 @@
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -123,18 +124,14 @@ bool settled(const std::vector<double>& frameMs) {
 
 }  // namespace
 
-bool isFloor(const std::string& technique) {
-    return technique == kFloorDepth || technique == kFloorLambert || technique == kFloorUnshadowed;
-}
+bool isFloor(const std::string& technique) { return std::find(kFloors.begin(), kFloors.end(), technique) != kFloors.end(); }
 
 namespace {
 
 std::unique_ptr<Engine> makeEngine(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings) {
     if (isFloor(c.technique)) {
         const int res = c.shadowResolution > 0 ? c.shadowResolution : (scene.lights.empty() ? 2048 : scene.lights.front().shadow.resolution);
-        const FloorRenderer::Mode mode = c.technique == kFloorDepth     ? FloorRenderer::Mode::DepthOnly
-                                         : c.technique == kFloorLambert ? FloorRenderer::Mode::Lambert
-                                                                        : FloorRenderer::Mode::Unshadowed;
+        const auto mode = static_cast<FloorRenderer::Mode>(std::find(kFloors.begin(), kFloors.end(), c.technique) - kFloors.begin());
         return std::make_unique<FloorEngine>(scene, mode, res, c.technique);
     }
     render::RenderOptions options = settings.render;

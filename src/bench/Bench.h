@@ -19,6 +19,8 @@ namespace penumbra::bench {
 inline constexpr const char* kFloorDepth = "floor-depth";
 inline constexpr const char* kFloorLambert = "floor-lambert";
 inline constexpr const char* kFloorUnshadowed = "floor-unshadowed";
+// All of them, in the order of FloorRenderer::Mode (DepthOnly, Lambert, Unshadowed).
+inline constexpr std::array<const char*, 3> kFloors{kFloorDepth, kFloorLambert, kFloorUnshadowed};
 // Whether `technique` names one of the floor's pseudo-techniques above.
 bool isFloor(const std::string& technique);
 

@@ -17,7 +17,7 @@ namespace penumbra::bench {
 
 class FloorRenderer {
 public:
-    enum class Mode { DepthOnly, Lambert, Unshadowed };
+    enum class Mode { DepthOnly, Lambert, Unshadowed };  // the order of bench::kFloors (Bench.h)
     // Uses the scene's first light (a directional one's box, a spot's cone; a point light's
     // first cube face). Throws InputError-like std::invalid_argument when the scene has no light.
     FloorRenderer(const scene::Scene& scene, Mode mode, int shadowResolution);

@@ -161,8 +161,8 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
         for (const fs::path& scene : {defaultScene(), millionScene(sceneDir)})
             for (const auto& t : shadows::techniqueRegistry()) cases.push_back(make(suite, scene, t.name, 0));
     } else if (suite == "floor") {
-        for (const char* technique : {kFloorDepth, kFloorLambert, kFloorUnshadowed, "none", "hard"})
-            cases.push_back(make(suite, defaultScene(), technique, 2048));
+        for (const char* technique : kFloors) cases.push_back(make(suite, defaultScene(), technique, 2048));
+        for (const char* technique : {"none", "hard"}) cases.push_back(make(suite, defaultScene(), technique, 2048));
         // The floor redraws its map every frame; hard keeps what still casters drew unless told.
         BenchCase redrawn = make(suite, defaultScene(), "hard", 2048, {}, "hard 2048, maps redrawn");
         redrawn.redrawShadowMaps = true;
