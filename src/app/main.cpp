@@ -159,13 +159,7 @@ int main(int argc, char** argv) {
             }
         },
         "comma-separated shadow-map resolutions (default: each light's own)");
-    {
-        std::vector<std::string> suiteNames = bench::suiteNames();
-        std::string names;
-        for (const auto& s : suiteNames) names += (names.empty() ? "" : ", ") + s;
-        benchCmd->add_option("--suite", bench.suites, "named suite(s): " + names)
-            ->check(CLI::IsMember(suiteNames));
-    }
+    benchCmd->add_option("--suite", bench.suites, "named suite(s): " + bench::suiteList())->check(CLI::IsMember(bench::suiteNames()));
     app::addSize(*benchCmd, bench.settings.width, bench.settings.height, "1280x720");
     auto* seconds = benchCmd->add_option("--seconds", bench.settings.seconds, "measure each case this long (default 2)")
                         ->check(CLI::PositiveNumber);

@@ -134,6 +134,12 @@ fs::path writeGridScene(const fs::path& dir, const std::string& name, std::size_
 
 std::vector<std::string> suiteNames() { return {"cssm-table", "osg-tables", "all-techniques", "floor", "triangle-scaling"}; }
 
+std::string suiteList() {
+    std::string list;
+    for (const auto& s : suiteNames()) list += (list.empty() ? "" : ", ") + s;
+    return list;
+}
+
 std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& sceneDir) {
     std::vector<BenchCase> cases;
     if (suite == "cssm-table") {
@@ -179,9 +185,7 @@ std::vector<BenchCase> suiteCases(const std::string& suite, const fs::path& scen
             }
         }
     } else {
-        std::string known;
-        for (const auto& s : suiteNames()) known += (known.empty() ? "" : ", ") + s;
-        throw std::invalid_argument("unknown suite '" + suite + "'; suites: " + known);
+        throw std::invalid_argument("unknown suite '" + suite + "'; suites: " + suiteList());
     }
     return cases;
 }

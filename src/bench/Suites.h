@@ -20,6 +20,8 @@
 namespace penumbra::bench {
 
 std::vector<std::string> suiteNames();
+// The same, comma-separated (help texts and errors).
+std::string suiteList();
 
 // The cases of `suite`. Generated scenes are written under `sceneDir` (reused when present).
 // Throws std::invalid_argument naming the known suites for an unknown name.
