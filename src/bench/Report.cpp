@@ -18,6 +18,9 @@ std::string caseLabel(const CaseResult& r) {
     return r.spec.shadowResolution > 0 ? r.technique + " " + std::to_string(r.spec.shadowResolution) : r.technique;
 }
 
+// The median GPU time of a case's shadow pass.
+static double shadowPassMs(const CaseResult& r) { return r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median; }
+
 std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results) {
     std::vector<ScalingFit> fits;
     for (const CaseResult& r : results) {
@@ -25,7 +28,7 @@ std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results
         auto it = std::find_if(fits.begin(), fits.end(), [&](const ScalingFit& f) { return f.suite == r.spec.suite && f.label == label; });
         if (it == fits.end()) it = fits.insert(fits.end(), ScalingFit{r.spec.suite, label, {}, {}, {}});
         it->triangles.push_back(r.shadowTrianglesPerFrame);
-        it->shadowMs.push_back(r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median);
+        it->shadowMs.push_back(shadowPassMs(r));
     }
     std::erase_if(fits, [](const ScalingFit& f) {
         std::vector<double> distinct = f.triangles;
@@ -43,7 +46,6 @@ std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
             if (f.technique == floor && f.spec.scene == r.spec.scene && f.spec.shadowResolution == r.spec.shadowResolution) return &f;
         return nullptr;
     };
-    const auto shadow = [](const CaseResult& r) { return r.passMs[static_cast<std::size_t>(render::Pass::Shadow)].median; };
     std::vector<FloorRatio> ratios;
     for (const CaseResult& r : results) {
         if (isFloor(r.technique)) continue;
@@ -53,7 +55,8 @@ std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
             q.frameFloor = f->technique;
             q.frame = r.frameMs.mean / f->frameMs.mean;
         }
-        if (const CaseResult* f = floorCase(r, kFloorDepth); f && !mapless && shadow(*f) > 0) q.shadowPass = shadow(r) / shadow(*f);
+        if (const CaseResult* f = floorCase(r, kFloorDepth); f && !mapless && shadowPassMs(*f) > 0)
+            q.shadowPass = shadowPassMs(r) / shadowPassMs(*f);
         if (!q.frameFloor.empty() || q.shadowPass > 0) ratios.push_back(q);
     }
     return ratios;
@@ -146,7 +149,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
                 c["baseline"] = {
                     {"frame_ms_mean_ratio", ratio(r.frameMs.mean, (*old)["frame_ms"].value("mean", 0.0))},
                     {"gpu_frame_ms_median_ratio", ratio(r.gpuFrameMs.median, (*old)["gpu_frame_ms"].value("median", 0.0))},
-                    {"shadow_ms_median_ratio", ratio(r.passMs[0].median, (*old)["pass_gpu_ms"]["shadow"].value("median", 0.0))},
+                    {"shadow_ms_median_ratio", ratio(shadowPassMs(r), (*old)["pass_gpu_ms"]["shadow"].value("median", 0.0))},
                     {"shadow_memory_ratio", ratio(static_cast<double>(r.shadowMemoryBytes), (*old).value("shadow_memory_bytes", 0.0))},
                 };
             } else {
