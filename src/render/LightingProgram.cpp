@@ -33,17 +33,16 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
     of(first);
 }
 
-const gl::Program& LightingPrograms::of(const scene::Material& material) {
-    if (material.diffuseTexture >= 0) {
-        if (!general_.id()) general_ = buildLightingProgram(lookup_, defines_);
-        return general_;
-    }
-    if (!untextured_.id()) {
+const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent) {
+    const bool untextured = material.diffuseTexture < 0;
+    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0)];
+    if (!build.id()) {
         std::vector<std::string> defines = defines_;
-        defines.emplace_back("MATERIAL_UNTEXTURED 1");
-        untextured_ = buildLightingProgram(lookup_, defines);
+        if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
+        if (translucent) defines.emplace_back("MATERIAL_TRANSLUCENT 1");
+        build = buildLightingProgram(lookup_, defines);
     }
-    return untextured_;
+    return build;
 }
 
 }  // namespace penumbra::render

@@ -26,26 +26,29 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int su
 // layout, a transparency variant).
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
 
-// The lighting program in up to two builds: the general one, and one for materials without a
-// diffuse texture (MATERIAL_UNTEXTURED) that never samples it. llvmpipe runs the sample under
-// `uHasTexture != 0` for every fragment whatever the uniform says (measured, default scene,
-// none: ~2.5 ms of a 21 ms opaque pass). The build the scene needs first is compiled at once,
-// so shader errors still surface there; the other one when a material first asks for it.
+// The lighting program in up to four builds: with or without a diffuse texture, for opaque or
+// translucent surfaces. MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
+// under `uHasTexture != 0` for every fragment whatever the uniform says (measured, default
+// scene, none: ~2.5 ms of a 21 ms opaque pass). MATERIAL_TRANSLUCENT lets a lookup pick what
+// suits receivers that are themselves translucent layers (CSSM's nearest-layer statistics). The
+// build the scene needs first is compiled at once, so shader errors still surface there; the
+// others when a surface first asks for them.
 class LightingPrograms {
 public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
-    const gl::Program& of(const scene::Material& material);
+    // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
+    const gl::Program& of(const scene::Material& material, bool translucent = false);
     template <class F>
     void forEachBuilt(F&& f) const {
-        if (general_.id()) f(general_);
-        if (untextured_.id()) f(untextured_);
+        for (const gl::Program& p : builds_)
+            if (p.id()) f(p);
     }
 
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    gl::Program general_, untextured_;
+    gl::Program builds_[4];  // [untextured + 2 translucent]
 };
 
 }  // namespace penumbra::render

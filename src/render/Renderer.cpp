@@ -345,7 +345,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         return d.translucent == translucent && d.visible && (translucent || ownObject(d.object));
     };
     for (const Draw& d : draws)
-        if (drawn(d)) lighting_.of(*d.material);  // builds what this pass needs before it is prepared
+        if (drawn(d)) lighting_.of(*d.material, d.translucent);  // builds what this pass needs before it is prepared
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
@@ -357,7 +357,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     for (const Draw& d : draws) {
         if (!drawn(d)) continue;
-        const gl::Program& program = lighting_.of(*d.material);
+        const gl::Program& program = lighting_.of(*d.material, d.translucent);
         if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
         else gpu_.draw(d, program);
     }

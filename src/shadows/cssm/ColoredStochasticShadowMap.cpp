@@ -21,6 +21,7 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
     copy_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/copy.frag"});
     casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/cssm/caster.frag"});
     tiles_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/tiles.frag"});
+    nearestLayer_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/nearest_layer.frag"});
 }
 
 std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
@@ -36,6 +37,10 @@ std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
             Parameter::flag("coverage", coverage_,
                             "box filters: average the transmittance over the texels a translucent layer covers, and place "
                             "the coloured edge by the receiver's own texels (as sharp as the plain map's)"),
+            Parameter::flag("nearest_layer", decideByNearestLayer_,
+                            "box filters with coverage: decide a receiver just behind the nearest translucent layer (a "
+                            "pane's back face) from per-tile statistics of that layer, instead of counting its tile "
+                            "texel by texel"),
             Parameter::real("radius_texels", radiusTexels_, 0.0f, 8.0f,
                             "Poisson / random filter radius; 0: automatic, so that taps land on distinct texels"),
             Parameter::choice("rng", generator_, {"pcg", "sin-fract"}, "per-fragment random number generator"),
@@ -77,10 +82,14 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     if (side == 0) return;
     m.tileSide = side;
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        // Level 0 alone as the tiles pass's input: it writes level log2(side) of the same texture.
+        // Level 0 alone as the tiles passes' input: they write levels log2(side) (tiles.frag) and
+        // log2(side) - 1 (nearest_layer.frag, 2D maps only) of the same texture.
         m.colourFaces.push_back(gl::Texture::view2D(m.colour, format, f, 0));
         m.tileTargets.push_back(
             gl::Framebuffer::colourOnly(m.colour, m.cube ? f : -1, "coloured stochastic shadow map tiles", tileLevel(side)));
+        if (!m.cube)
+            m.nearestLayerTargets.push_back(gl::Framebuffer::colourOnly(m.colour, -1, "coloured stochastic shadow map nearest layer",
+                                                                        tileLevel(side) - 1));
     }
 }
 
@@ -95,6 +104,8 @@ int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmB
 void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect) {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
+    const float noLayer[4] = {0, 0, 2, -1};  // nearest_layer.frag's texels where no layer is
+    if (!m.cube) glClearNamedFramebufferfv(m.nearestLayerTargets[face].id(), GL_COLOR, 0, noLayer);
     if (isEmpty(rect)) return;
     const glm::ivec2 first = glm::ivec2(rect.x, rect.y) / m.tileSide;
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
@@ -109,6 +120,14 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     m.colourFaces[face].bind(0);
     fullscreenVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (!m.cube) {  // two texels per tile, one level finer
+        m.nearestLayerTargets[face].bind();
+        glViewport(0, 0, m.resolution >> (level - 1), m.resolution >> (level - 1));
+        glScissor(2 * first.x, 2 * first.y, 2 * (last.x - first.x), 2 * (last.y - first.y));
+        nearestLayer_.use();
+        nearestLayer_.set("uSide", m.tileSide);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     glDisable(GL_SCISSOR_TEST);
 }
 
@@ -190,6 +209,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     }
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uTileSide", tileSide());
+    lighting.set("uNearestLayer", decideByNearestLayer_ ? 1 : 0);
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
     poisson_.upload(lighting);
 }

@@ -66,7 +66,8 @@ private:
         // map's mip level log2(side) (0: no tiles).
         int tileSide = 0;
         std::vector<gl::Texture> colourFaces;      // 2D views of the colour map's level 0 faces (tiles input)
-        std::vector<gl::Framebuffer> tileTargets;  // per face: its level log2(side)
+        std::vector<gl::Framebuffer> tileTargets;          // per face: its level log2(side)
+        std::vector<gl::Framebuffer> nearestLayerTargets;  // per face: its level log2(side) - 1 (nearest_layer.frag)
     };
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
@@ -78,11 +79,11 @@ private:
     Variant variant_;
     int filter_ = gpu::kCssmBox64, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
     float radiusTexels_ = 0.0f;
-    bool fp16_, separateOpaque_ = true, coverage_ = true;
+    bool fp16_, separateOpaque_ = true, coverage_ = true, decideByNearestLayer_ = true;
     PoissonDisk poisson_;
     DepthAndTintMaps depth_{/*withTint=*/false};
     std::vector<LightMap> maps_;
-    gl::Program copy_, casters_, tiles_;
+    gl::Program copy_, casters_, tiles_, nearestLayer_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;
 };

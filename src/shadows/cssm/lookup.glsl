@@ -15,6 +15,12 @@ const bool kCoverage = CSSM_COVERAGE != 0;  // box filters average over the texe
 uniform float uStorageEpsilon;  // relative precision of the stored depth (RGBA16F: 2^-10), 0 for fp32
 uniform float uRadiusTexels;
 uniform int uTileSide;  // 4 or 8: the side of the stratified tiles (box filters)
+#ifdef MATERIAL_TRANSLUCENT
+const bool kNearestLayer = true;  // the lighting program of translucent surfaces (render/LightingProgram.h)
+#else
+const bool kNearestLayer = false;
+#endif
+uniform int uNearestLayer;  // 1: box lookups may decide by the nearest layer's statistics (nearest_layer.frag)
 
 const vec2 kCross13[13] = vec2[](vec2(0, 0), vec2(3, 3), vec2(-3, 3), vec2(3, -3), vec2(-3, -3), vec2(4, 0),
                                  vec2(-4, 0), vec2(0, 4), vec2(0, -4), vec2(7, 0), vec2(-7, 0), vec2(0, 7), vec2(0, -7));
@@ -109,6 +115,27 @@ float ownCoverage(ShadowSite s, MapFace m) {
     return mix(mix(c.w, c.z, f.x), mix(c.x, c.y, f.x), f.y);  // gather order: (0,1) (1,1) (1,0) (0,0)
 }
 
+// nearest_layer.frag's first texel: the counts through the nearest layer alone, and the least gap.
+vec3 nearestLayerCounts(vec4 stats, int side) {
+    float m = float(side * side + 1);
+    vec2 high = floor((stats.rg + 0.5) / m);
+    return vec3(stats.rg - m * high, high.x + 16.0 * high.y);
+}
+
+// The receiver's gap behind a tile's nearest layer (nearest_layer.frag's plane, `plane` =
+// (a0, g.x, g.y, largest deviation)), bounded over the tile of side `side` centred at `centre`
+// (texel units): (least, largest). The receiver is the plane through `receiver` (its linear
+// depth at its own texel `at`) with `gradient` (per texel), so the gap is affine and its
+// extremes lie at the tile's corners. A spot light's linear depth bends a little over a tile;
+// the storage margin of the test absorbs that (the comparison with counting texel by texel in
+// StochasticShadowTest holds it to 3/255).
+vec2 gapBounds(float receiver, vec2 gradient, vec2 at, vec2 centre, int side, vec4 plane) {
+    float gap = receiver + dot(gradient, centre - at) - plane.x;
+    vec2 slope = abs(gradient - plane.yz);
+    float spread = 0.5 * float(side) * (slope.x + slope.y) + plane.w;
+    return vec2(gap - spread, gap + spread);
+}
+
 vec3 colouredByTiles(ShadowSite s, int side) {
     MapFace m = mapFace(s);
     float own = ownCoverage(s, m);
@@ -130,43 +157,86 @@ vec3 colouredByTiles(ShadowSite s, int side) {
     // outside the level: there the texels are counted.
     int levelTiles = int(s.resolution) >> level;
     vec2 first = floor(m.texel / float(side)) * float(side);  // the receiver's own tile
-    vec3 passing = vec3(0.0);
-    float covered = 0.0, farthest = 0.0;
+    vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
+    float covered = 0.0, farthest = 0.0, leastGap = 2.0;
     vec4 acc = vec4(0.0);
-    bool tilesDecide = false;
-    // One loop, one fetch per pass: passes 0-3 read the 2 x 2 tiles' counts (level log2(side)),
-    // blended as sum(w passing) / sum(w covered) with w the bilinear weights; then, unless those
-    // decide, the rest count the own tile's texels (level 0). llvmpipe runs an if's both sides for
-    // every 8-pixel group and a loop's body at least once, but leaves a loop once no lane is left
-    // in it: a loop over tiles and another over texels cost a fetch each where no layer covers the
-    // receiver, this one costs one. The bound comes from a uniform: an unrolled loop would run
-    // every pass.
-    int passes = uTileSide > 0 ? 4 + uTileSide * uTileSide : 0;
+    bool tilesDecide = false, nearestDecides = false, byNearestLayer = kNearestLayer && uNearestLayer != 0 && !s.cube;
+    // One storage quantum of the receiver's depth (RGBA16F: 2^-10 of it); fp32 maps get a hair.
+    float receiverDepth = linearShadowDepth(s.light, s.depth);
+    float quantum = max(uStorageEpsilon, 1.0 / 1048576.0) * receiverDepth;
+    // The receiver's linear depth per texel, for the gap bounds.
+    vec2 gradient = vec2(linearShadowDepth(s.light, tapReceiverDepth(s, vec2(1.0, 0.0))),
+                         linearShadowDepth(s.light, tapReceiverDepth(s, vec2(0.0, 1.0)))) - receiverDepth;
+    // Passes 0-3 read the 2 x 2 tiles' counts (level log2(side)), blended as
+    // sum(w passing) / sum(w covered) with w the bilinear weights. Unless those decide:
+    // - translucent receivers (kNearestLayer): passes 4-11 read the same tiles' nearest-layer
+    //   statistics (level log2(side) - 1, nearest_layer.frag: counts and least gap, then the
+    //   layer's plane), which decide for a receiver behind that layer at every covered texel and,
+    //   by its gap, in front of (or within half a storage quantum behind) every other layer's
+    //   write there: the back face of a pane behind its own front face. Where they do not
+    //   either, a second loop counts the own tile texel by texel (level 0);
+    // - opaque receivers: the same loop goes on to count the own tile's texels.
+    // llvmpipe runs an if's both sides for every 8-pixel group and a loop's body at least once,
+    // but leaves a loop once no lane is left in it, so each pass is one fetch, and the loop
+    // bounds come from uniforms (an unrolled loop would run every pass). Measured on the glass
+    // scene (issue 11): a second, lean loop over the texels costs translucent receivers 49 ms
+    // against 69 ms in the shared loop, but costs opaque ones its one empty pass everywhere
+    // (default scene, opaque pass +5 ms); hence the split by receiver.
+    int passes = uTileSide <= 0 ? 0 : kNearestLayer ? (byNearestLayer ? 12 : 4) : 4 + uTileSide * uTileSide;
     for (int k = 0; k < passes; ++k) {
         if (own <= 0.0) break;  // no layer in front of the receiver's own texels
         if (k == 4) {
             tilesDecide = farthest < nearest && covered > 0.0;
             if (tilesDecide) break;
         }
-        bool tile = k < 4;
-        ivec2 t = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), ivec2(lastTile));  // no neighbours across map (face) borders
+        bool tile = k < 4, layerCounts = kNearestLayer && k >= 4 && k < 8, layerPlane = kNearestLayer && k >= 8;
+        bool texelPass = !kNearestLayer && k >= 4;
+        int q = k & 3;
+        ivec2 t = clamp(base + ivec2(q & 1, q >> 1), ivec2(0), ivec2(lastTile));  // no neighbours across map (face) borders
         bool missing = any(greaterThanEqual(t, ivec2(levelTiles)));
+        ivec2 inLevel = min(t, ivec2(levelTiles - 1));
         int e = k - 4;
-        vec2 texel = tile ? (vec2(min(t, ivec2(levelTiles - 1))) + 0.5) * float(side) : first + vec2(e % side, e / side) + 0.5;
-        vec4 v = levelTexel(s, m, texel, tile ? level : 0);
+        vec2 texel = texelPass ? first + vec2(e % side, e / side) + 0.5 : (vec2(inLevel) + 0.5) * float(side);
+        // One fetch whatever the pass (llvmpipe would run both sides of a choice between two).
+        int lod = tile ? level : texelPass ? 0 : level - 1;
+        ivec2 layerTexel = ivec2(2 * inLevel.x + (layerPlane ? 1 : 0), 2 * inLevel.y) << (level - 1);  // in level-0 texels
+        vec4 v = levelTexel(s, m, layerCounts || layerPlane ? vec2(layerTexel) + 0.5 : texel, lod);
+        float w = ((q & 1) != 0 ? f.x : 1.0 - f.x) * ((q & 2) != 0 ? f.y : 1.0 - f.y);
         // A tile: its counts, bilinearly weighted.
         vec3 p;
         float c;
         tileCounts(v, side, p, c);
-        float w = tile ? ((k & 1) != 0 ? f.x : 1.0 - f.x) * ((k & 2) != 0 ? f.y : 1.0 - f.y) : 0.0;
-        passing += w * p;
-        covered += w * c;
+        passing += tile ? w * p : vec3(0.0);
+        covered += tile ? w * c : 0.0;
         farthest = tile ? max(farthest, missing ? 2.0 : v.a) : farthest;
-        // A texel of the own tile: counted where a layer lies in front of the receiver there.
-        float receiver = receiverAt(s, m, texel);
-        acc += !tile && v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+        if (kNearestLayer) {  // folded away for opaque receivers
+            // The same tile through its nearest layer alone: its counts and least gap, then
+            // whether the receiver's gap fits (w < 0: no layer in the tile to be behind).
+            passingNearest += layerCounts ? w * nearestLayerCounts(v, side) : vec3(0.0);
+            leastGap = layerCounts ? min(leastGap, v.b) : leastGap;
+            vec2 gap = gapBounds(receiverDepth, gradient, m.texel, texel, side, v);
+            bool fits = v.w < 0.0 || (gap.x > 1.5 * quantum && gap.y <= leastGap + 1.5 * quantum);
+            byNearestLayer = byNearestLayer && (!layerPlane || (!missing && fits));
+        } else {
+            // A texel of the own tile: counted where a layer lies in front of the receiver there.
+            float receiver = receiverAt(s, m, texel);
+            acc += texelPass && v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+        }
     }
-    vec3 t = tilesDecide ? passing / covered : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
+    if (kNearestLayer) {
+        tilesDecide = farthest < nearest && covered > 0.0;  // also where the loop ended before pass 4
+        nearestDecides = !tilesDecide && byNearestLayer && covered > 0.0;
+        int texels = own > 0.0 && !tilesDecide && !nearestDecides ? uTileSide * uTileSide : 0;
+        for (int e = 0; e < texels; ++e) {
+            vec2 texel = first + vec2(e % side, e / side) + 0.5;
+            vec4 v = levelTexel(s, m, texel, 0);
+            float receiver = receiverAt(s, m, texel);
+            acc += v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+        }
+    }
+    vec3 t = tilesDecide ? passing / covered
+           : nearestDecides ? passingNearest / covered
+                            : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
     return mix(vec3(1.0), t, own);
 }
 
