@@ -136,6 +136,13 @@ vec2 gapBounds(float receiver, vec2 gradient, vec2 at, vec2 centre, int side, ve
     return vec2(gap - spread, gap + spread);
 }
 
+// A texel of the receiver's own tile (`v`, level 0): counted (w = 1) where a layer lies in front
+// of the receiver there, with the channels that pass every layer in front.
+vec4 ownTexelCount(ShadowSite s, MapFace m, vec2 texel, vec4 v) {
+    float receiver = receiverAt(s, m, texel);
+    return v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+}
+
 vec3 colouredByTiles(ShadowSite s, int side) {
     MapFace m = mapFace(s);
     float own = ownCoverage(s, m);
@@ -172,9 +179,10 @@ vec3 colouredByTiles(ShadowSite s, int side) {
     // - translucent receivers (kNearestLayer): passes 4-11 read the same tiles' nearest-layer
     //   statistics (level log2(side) - 1, nearest_layer.frag: counts and least gap, then the
     //   layer's plane), which decide for a receiver behind that layer at every covered texel and,
-    //   by its gap, in front of (or within half a storage quantum behind) every other layer's
-    //   write there: the back face of a pane behind its own front face. Where they do not
-    //   either, a second loop counts the own tile texel by texel (level 0);
+    //   by its gap, in front of every other layer's write there (margins of 1.5 storage quanta,
+    //   for the half-float rounding of alpha, the writes and the plane): the back face of a pane
+    //   behind its own front face. Where they do not either, a second loop counts the own tile
+    //   texel by texel (level 0);
     // - opaque receivers: the same loop goes on to count the own tile's texels.
     // llvmpipe runs an if's both sides for every 8-pixel group and a loop's body at least once,
     // but leaves a loop once no lane is left in it, so each pass is one fetch, and the loop
@@ -218,9 +226,7 @@ vec3 colouredByTiles(ShadowSite s, int side) {
             bool fits = v.w < 0.0 || (gap.x > 1.5 * quantum && gap.y <= leastGap + 1.5 * quantum);
             byNearestLayer = byNearestLayer && (!layerPlane || (!missing && fits));
         } else {
-            // A texel of the own tile: counted where a layer lies in front of the receiver there.
-            float receiver = receiverAt(s, m, texel);
-            acc += texelPass && v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+            acc += texelPass ? ownTexelCount(s, m, texel, v) : vec4(0.0);
         }
     }
     if (kNearestLayer) {
@@ -229,9 +235,7 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         int texels = own > 0.0 && !tilesDecide && !nearestDecides ? uTileSide * uTileSide : 0;
         for (int e = 0; e < texels; ++e) {
             vec2 texel = first + vec2(e % side, e / side) + 0.5;
-            vec4 v = levelTexel(s, m, texel, 0);
-            float receiver = receiverAt(s, m, texel);
-            acc += v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
+            acc += ownTexelCount(s, m, texel, levelTexel(s, m, texel, 0));
         }
     }
     vec3 t = tilesDecide ? passing / covered
