@@ -120,7 +120,7 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     m.colourFaces[face].bind(0);
     fullscreenVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (!m.cube) {  // two texels per tile, one level finer
+    if (!m.cube && decideByNearestLayer_) {  // two texels per tile, one level finer; only the lookup's switch reads them
         m.nearestLayerTargets[face].bind();
         glViewport(0, 0, m.resolution >> (level - 1), m.resolution >> (level - 1));
         glScissor(2 * first.x, 2 * first.y, 2 * (last.x - first.x), 2 * (last.y - first.y));
@@ -137,7 +137,7 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
 std::uint64_t ColoredStochasticShadowMap::colourKey(std::size_t light, std::size_t face) const {
     const std::uint64_t translucent = depth_.maps(light).translucentKeys[face];
     if (translucent == 0 || xi_ != gpu::kXiStratified || !separateOpaque_) return 0;
-    return util::Digest().add(translucent, generator_, tileSide()).value();
+    return util::Digest().add(translucent, generator_, tileSide(), decideByNearestLayer_).value();
 }
 
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
