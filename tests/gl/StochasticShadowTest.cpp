@@ -319,9 +319,10 @@ std::vector<float> renderLinear(scene::Scene& s, const std::string& technique, c
 // their tile texel by texel (issue 11: 64 fetches per pixel and light, the glass scene's cost).
 // Two closed panes (0.04 thick, 0.5 apart) lit slantwise from below and seen from above: the
 // lower pane's top face is behind one layer (decided by the statistics), the upper pane's faces
-// behind two and three (which the statistics must leave to the texels). The shaded picture with
-// and without the statistics agree within 2/255 at every pixel; deciding every receiver that is
-// behind the nearest layer by its statistics alone fails this by far.
+// behind two and three (which the statistics must leave to the texels). The statistics count
+// the very texels of the receiver's tile the texel loop counts, so the shaded pictures with and
+// without them agree within 1/255 at every pixel; deciding every receiver that is behind the
+// nearest layer by its statistics alone fails this by far.
 TEST_P(Stochastic, StackedPanesShadeTheSameDecidedByTheNearestLayer) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 35 },
@@ -334,29 +335,22 @@ TEST_P(Stochastic, StackedPanesShadeTheSameDecidedByTheNearestLayer) {
     const std::vector<float> counted = renderLinear(s, GetParam(), {{"nearest_layer", "false"}}, OutputMode::Shaded, 128, 128);
     float worst = 0.0f;
     for (std::size_t i = 0; i < decided.size(); ++i) worst = std::max(worst, std::abs(decided[i] - counted[i]));
-    EXPECT_LE(worst, 2.0f / 255.0f);
+    EXPECT_LE(worst, 1.0f / 255.0f);
 }
 
 // The same on the coloured-glass scene, whose panes overlap from the sun and the spot (a pane's
 // back face behind another pane is behind more than one layer, where the statistics must not
-// decide): the shaded picture with the statistics within 3/255 of counting texel by texel at
-// every pixel, and within 1/255 at all but 0.5 % (measured at 1280x720: 610 pixels differ by
-// more than 1/255, none by more than 3/255).
+// decide): the shaded picture with the statistics within 1/255 of counting texel by texel at
+// every pixel (measured: 0.0007 at most; letting the statistics decide for every receiver behind
+// the nearest layer: 0.2).
 TEST_P(Stochastic, NearestLayerStatisticsGiveTheGlassSceneCountingTexelsGives) {
     scene::Scene s = scene::io::loadScene(std::filesystem::path(PENUMBRA_TEST_DATA) / "../../scenes/glass.json");
     const std::vector<float> decided = renderLinear(s, GetParam(), {}, OutputMode::Shaded, 640, 360);
     const std::vector<float> counted = renderLinear(s, GetParam(), {{"nearest_layer", "false"}}, OutputMode::Shaded, 640, 360);
     float worst = 0.0f;
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < decided.size(); ++i) {
-        const float d = std::abs(decided[i] - counted[i]);
-        worst = std::max(worst, d);
-        differing += d > 1.0f / 255.0f ? 1 : 0;
-    }
-    std::printf("%s: largest difference %.4f, %zu of %zu channel values differ by more than 1/255\n", GetParam(), worst,
-                differing, decided.size());
-    EXPECT_LE(worst, 3.0f / 255.0f);
-    EXPECT_LE(differing, decided.size() / 200);
+    for (std::size_t i = 0; i < decided.size(); ++i) worst = std::max(worst, std::abs(decided[i] - counted[i]));
+    std::printf("%s: largest difference %.4f\n", GetParam(), worst);
+    EXPECT_LE(worst, 1.0f / 255.0f);
 }
 
 // The lookup's filter is compiled into the lighting program (lookupDefines): a filter chosen

@@ -104,8 +104,7 @@ int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmB
 void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect) {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
-    const float noLayer[4] = {0, 0, 2, -1};  // nearest_layer.frag's texels where no layer is
-    if (!m.cube) glClearNamedFramebufferfv(m.nearestLayerTargets[face].id(), GL_COLOR, 0, noLayer);
+    if (!m.cube) glClearNamedFramebufferfv(m.nearestLayerTargets[face].id(), GL_COLOR, 0, zero);  // no covered texels
     if (isEmpty(rect)) return;
     const glm::ivec2 first = glm::ivec2(rect.x, rect.y) / m.tileSide;
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;

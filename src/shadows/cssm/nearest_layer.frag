@@ -11,10 +11,9 @@
 //   [0] r = passing.r + M (passing.b mod 16), g = passing.g + M floor(passing.b / 16), with
 //       passing.λ the covered texels where the nearest layer did not write channel λ and
 //       M = side² + 1 (exact in RGBA16F); b = the least gap (w - alpha) of any channel's write w
-//       behind the nearest layer (2 if none); a = 0.
+//       behind the nearest layer (2 if none); a = the covered texels.
 //   [1] the least-squares plane of alpha over the covered texels, alpha ≈ a0 + g.(p - centre)
-//       in texel units from the tile's centre: (a0, g.x, g.y, the largest |alpha - plane|);
-//       a = -1 where no layer covers the tile (renderTiles clears the level to that too).
+//       in texel units from the tile's centre: (a0, g.x, g.y, the largest |alpha - plane|).
 // The lookup (lookup.glsl, colouredByTiles) bounds the receiver's gap over the tile from its own
 // plane and this one, and takes `passing` when that bound lies between 0 and the least gap.
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
@@ -50,10 +49,9 @@ void main() {
     if ((at.x & 1) == 0) {
         float m = float(uSide * uSide + 1);
         int b = int(passing.b);
-        outStats = vec4(passing.r + m * float(b & 15), passing.g + m * float(b >> 4), leastGap, 0.0);
+        outStats = vec4(passing.r + m * float(b & 15), passing.g + m * float(b >> 4), leastGap, n);
         return;
     }
-    if (n == 0.0) { outStats = vec4(0.0, 0.0, 0.0, -1.0); return; }  // no layer: nothing to be behind
     if (n < 3.0) { outStats = vec4(0.0, 0.0, 0.0, 2.0); return; }  // too few texels to fit: never decides
     mat3 normal = mat3(n, sx, sy, sx, sxx, sxy, sy, sxy, syy);
     if (abs(determinant(normal)) < 1e-3) { outStats = vec4(0.0, 0.0, 0.0, 2.0); return; }  // collinear texels
