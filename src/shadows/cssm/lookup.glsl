@@ -176,14 +176,15 @@ vec3 colouredByTiles(ShadowSite s, int side) {
                          linearShadowDepth(s.light, tapReceiverDepth(s, vec2(0.0, 1.0)))) - receiverDepth;
     // Passes 0-3 read the 2 x 2 tiles' counts (level log2(side)), blended as
     // sum(w passing) / sum(w covered) with w the bilinear weights. Unless those decide:
-    // - translucent receivers (kNearestLayer): passes 4 and 5 read the own tile's nearest-layer
+    // - translucent receivers (kNearestLayer): passes 4-6 read the own tile's nearest-layer
     //   statistics (level log2(side) - 1, nearest_layer.frag: counts, least gap and covered
-    //   texels, then the layer's plane), which decide for a receiver behind that layer at every
-    //   covered texel of its tile and, by its gap, in front of every other layer's write there
-    //   (margins of 1.5 storage quanta, for the half-float rounding of alpha, the writes and the
-    //   plane): the back face of a pane behind its own front face. They count the very texels
-    //   the texel loop would, with the same answer. Where they do not decide either, a second
-    //   loop counts the own tile texel by texel (level 0);
+    //   texels; the layer's plane; the plane of the gaps behind it), which decide for a receiver
+    //   behind that layer at every covered texel of its tile and, by its gap, in front of every
+    //   other layer's write there (margins of 1.5 storage quanta, for the half-float rounding of
+    //   alpha, the writes and the planes): the back face of a pane behind its own front face, a
+    //   block's far face behind its near one. They count the very texels the texel loop would,
+    //   with the same answer. Where they do not decide either, a second loop counts the own
+    //   tile texel by texel (level 0);
     // - opaque receivers: the same loop goes on to count the own tile's texels.
     // llvmpipe runs an if's both sides for every 8-pixel group and a loop's body at least once,
     // but leaves a loop once no lane is left in it, so each pass is one fetch, and the loop
@@ -191,17 +192,18 @@ vec3 colouredByTiles(ShadowSite s, int side) {
     // scene (issue 11): a second, lean loop over the texels costs translucent receivers 49 ms
     // against 69 ms in the shared loop, but costs opaque ones its one empty pass everywhere
     // (default scene, opaque pass +5 ms); hence the split by receiver.
-    int passes = uTileSide <= 0 ? 0 : kNearestLayer ? (byNearestLayer ? 6 : 4) : 4 + uTileSide * uTileSide;
+    int passes = uTileSide <= 0 ? 0 : kNearestLayer ? (byNearestLayer ? 7 : 4) : 4 + uTileSide * uTileSide;
     ivec2 ownTile = ivec2(first) / side;
     byNearestLayer = byNearestLayer && all(lessThan(ownTile, ivec2(levelTiles)));  // not the partial last tile
     float ownCovered = 0.0;
+    vec4 alphaPlane = vec4(0.0);
     for (int k = 0; k < passes; ++k) {
         if (own <= 0.0) break;  // no layer in front of the receiver's own texels
         if (k == 4) {
             tilesDecide = farthest < nearest && covered > 0.0;
             if (tilesDecide) break;
         }
-        bool tile = k < 4, layerCounts = kNearestLayer && k == 4, layerPlane = kNearestLayer && k == 5;
+        bool tile = k < 4, layerCounts = kNearestLayer && k == 4, layerPlane = kNearestLayer && k == 5, gapPlane = kNearestLayer && k == 6;
         bool texelPass = !kNearestLayer && k >= 4;
         int q = k & 3;
         ivec2 t = clamp(base + ivec2(q & 1, q >> 1), ivec2(0), ivec2(lastTile));  // no neighbours across map (face) borders
@@ -211,8 +213,8 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         vec2 texel = texelPass ? first + vec2(e % side, e / side) + 0.5 : (vec2(inLevel) + 0.5) * float(side);
         // One fetch whatever the pass (llvmpipe would run both sides of a choice between two).
         int lod = tile ? level : texelPass ? 0 : level - 1;
-        ivec2 layerTexel = ivec2(2 * ownTile.x + (layerPlane ? 1 : 0), 2 * ownTile.y) << (level - 1);  // in level-0 texels
-        vec4 v = levelTexel(s, m, layerCounts || layerPlane ? vec2(layerTexel) + 0.5 : texel, lod);
+        ivec2 layerTexel = (2 * ownTile + ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (level - 1);  // in level-0 texels
+        vec4 v = levelTexel(s, m, layerCounts || layerPlane || gapPlane ? vec2(layerTexel) + 0.5 : texel, lod);
         float w = ((q & 1) != 0 ? f.x : 1.0 - f.x) * ((q & 2) != 0 ? f.y : 1.0 - f.y);
         // A tile: its counts, bilinearly weighted.
         vec3 p;
@@ -223,13 +225,18 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         farthest = tile ? max(farthest, missing ? 2.0 : v.a) : farthest;
         if (kNearestLayer) {  // folded away for opaque receivers
             // The own tile through its nearest layer alone: its counts, least gap and covered
-            // texels, then whether the receiver's gap fits.
+            // texels, alpha's plane, then the gaps' plane, and whether the receiver's gap fits:
+            // behind alpha everywhere, and in front of every other write, by the least gap or
+            // by the gaps' plane (gap - gaps' plane, bounded as one plane against alpha + gaps).
             passingNearest = layerCounts ? nearestLayerCounts(v, side) : passingNearest;
             leastGap = layerCounts ? v.b : leastGap;
             ownCovered = layerCounts ? v.a : ownCovered;
-            vec2 gap = gapBounds(receiverDepth, gradient, m.texel, first + 0.5 * float(side), side, v);
-            bool fits = gap.x > 1.5 * quantum && gap.y <= leastGap + 1.5 * quantum;
-            byNearestLayer = byNearestLayer && (!layerPlane || fits);
+            alphaPlane = layerPlane ? v : alphaPlane;
+            vec2 centre = first + 0.5 * float(side);
+            vec2 gap = gapBounds(receiverDepth, gradient, m.texel, centre, side, alphaPlane);
+            vec2 beyondWrites = gapBounds(receiverDepth, gradient, m.texel, centre, side, alphaPlane + v);
+            bool fits = gap.x > 1.5 * quantum && (gap.y <= leastGap + 1.5 * quantum || beyondWrites.y <= 1.5 * quantum);
+            byNearestLayer = byNearestLayer && (!gapPlane || fits);
         } else {
             acc += texelPass ? ownTexelCount(s, m, texel, v) : vec4(0.0);
         }
