@@ -33,6 +33,7 @@ const gl::Program& OrderIndependentTransparency::variant(const std::string& defi
     if (found != variants_.end()) return found->second;
     std::vector<std::string> defines = lightLayout_;
     defines.push_back(define);
+    defines.emplace_back("MATERIAL_TRANSLUCENT 1");  // every variant shades translucent surfaces (LightingPrograms)
     return variants_.emplace(define, buildLightingProgram(lookup_, defines)).first->second;
 }
 
