@@ -119,7 +119,7 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     m.colourFaces[face].bind(0);
     fullscreenVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (!m.cube && decideByNearestLayer_) {  // two texels per tile, one level finer; only the lookup's switch reads them
+    if (!m.cube && decideByNearestLayer_) {  // three texels per tile, one level finer; only the lookup's switch reads them
         m.nearestLayerTargets[face].bind();
         glViewport(0, 0, m.resolution >> (level - 1), m.resolution >> (level - 1));
         glScissor(2 * first.x, 2 * first.y, 2 * (last.x - first.x), 2 * (last.y - first.y));
