@@ -82,14 +82,23 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     if (side == 0) return;
     m.tileSide = side;
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        // Level 0 alone as the tiles passes' input: they write levels log2(side) (tiles.frag) and
-        // log2(side) - 1 (nearest_layer.frag, 2D maps only) of the same texture.
+        // Level 0 alone as the tiles passes' input: they write levels log2(side) (tiles.frag) and,
+        // on 2D maps, log2(side) - 1 (tiles.frag's nearest-layer counts and nearest_layer.frag's
+        // planes) of the same texture.
         m.colourFaces.push_back(gl::Texture::view2D(m.colour, format, f, 0));
-        m.tileTargets.push_back(
-            gl::Framebuffer::colourOnly(m.colour, m.cube ? f : -1, "coloured stochastic shadow map tiles", tileLevel(side)));
-        if (!m.cube)
-            m.nearestLayerTargets.push_back(gl::Framebuffer::colourOnly(m.colour, -1, "coloured stochastic shadow map nearest layer",
-                                                                        tileLevel(side) - 1));
+        const int level = tileLevel(side);
+        if (m.cube) {
+            m.tileTargets.push_back(gl::Framebuffer::colourOnly(m.colour, f, "coloured stochastic shadow map tiles", level));
+            continue;
+        }
+        gl::Framebuffer tiles;  // the two levels differ in size: tiles.frag draws their common N x N corner
+        tiles.attach(GL_COLOR_ATTACHMENT0, m.colour, level);
+        tiles.attach(GL_COLOR_ATTACHMENT1, m.colour, level - 1);
+        tiles.setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
+        tiles.checkComplete("coloured stochastic shadow map tiles");
+        m.tileTargets.push_back(std::move(tiles));
+        m.nearestLayerTargets.push_back(
+            gl::Framebuffer::colourOnly(m.colour, -1, "coloured stochastic shadow map nearest layer", level - 1));
     }
 }
 
@@ -119,13 +128,16 @@ void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, cons
     m.colourFaces[face].bind(0);
     fullscreenVao_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    if (!m.cube && decideByNearestLayer_) {  // three texels per tile, one level finer; only the lookup's switch reads them
+    if (!m.cube && decideByNearestLayer_) {  // the planes, beside the counts (nearest_layer.frag)
         m.nearestLayerTargets[face].bind();
-        glViewport(0, 0, m.resolution >> (level - 1), m.resolution >> (level - 1));
-        glScissor(2 * first.x, 2 * first.y, 2 * (last.x - first.x), 2 * (last.y - first.y));
+        const int tiles = m.resolution >> level;
+        glViewport(0, 0, 2 * tiles, 2 * tiles);
         nearestLayer_.use();
         nearestLayer_.set("uSide", m.tileSide);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        for (const glm::ivec2 offset : {glm::ivec2(tiles, 0), glm::ivec2(0, tiles)}) {  // alpha's plane, the gaps' plane
+            glScissor(offset.x + first.x, offset.y + first.y, last.x - first.x, last.y - first.y);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
     }
     glDisable(GL_SCISSOR_TEST);
 }

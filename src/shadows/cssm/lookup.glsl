@@ -213,7 +213,7 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         vec2 texel = texelPass ? first + vec2(e % side, e / side) + 0.5 : (vec2(inLevel) + 0.5) * float(side);
         // One fetch whatever the pass (llvmpipe would run both sides of a choice between two).
         int lod = tile ? level : texelPass ? 0 : level - 1;
-        ivec2 layerTexel = (2 * ownTile + ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (level - 1);  // in level-0 texels
+        ivec2 layerTexel = (ownTile + levelTiles * ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (level - 1);  // in level-0 texels
         vec4 v = levelTexel(s, m, layerCounts || layerPlane || gapPlane ? vec2(layerTexel) + 0.5 : texel, lod);
         float w = ((q & 1) != 0 ? f.x : 1.0 - f.x) * ((q & 2) != 0 ? f.y : 1.0 - f.y);
         // A tile: its counts, bilinearly weighted.

@@ -6,19 +6,21 @@
 // Relative to the nearest layer, whose depth the alpha channel holds at every texel it covers,
 // the slopes of parallel faces cancel: a receiver at depth d behind it sees, at texel p, the
 // gap d(p) - alpha(p), and every other layer wrote no nearer to alpha than the tile's least gap.
-// Written into the colour map's mip level log2(side) - 1, three texels per tile at (2 tx, 2 ty),
-// (2 tx + 1, 2 ty) and (2 tx, 2 ty + 1) (the fourth is not used):
-//   [0] r = passing.r + M (passing.b mod 16), g = passing.g + M floor(passing.b / 16), with
-//       passing.λ the covered texels where the nearest layer did not write channel λ and
-//       M = side² + 1 (exact in RGBA16F); b = the least gap (w - alpha) of any channel's write w
-//       behind the nearest layer (2 if none); a = the covered texels.
-//   [1] the least-squares plane of alpha over the covered texels, alpha ≈ a0 + g.(p - centre)
-//       in texel units from the tile's centre: (a0, g.x, g.y, the largest |alpha - plane|).
-//   [2] the same for the gaps w - alpha of the writes behind the nearest layer (every written
-//       channel a sample): where the layer behind is a face at an angle to the nearest one (a
-//       block's far face), the gap is not constant but planar. (0, 0, 0, 2) where fewer than
-//       three texels have such writes.
-// The lookup (lookup.glsl, colouredByTiles) bounds the receiver's gap over the tile from its own
+// Level log2(side) - 1 of the colour map holds, for the N x N tiles (N = the map's side / side),
+// three texels per tile:
+//   (tx, ty), written by tiles.frag: r = passing.r + M (passing.b mod 16),
+//       g = passing.g + M floor(passing.b / 16), with passing.λ the covered texels where the
+//       nearest layer did not write channel λ and M = side² + 1 (exact in RGBA16F); b = the least
+//       gap (w - alpha) of any channel's write w behind the nearest layer (2 if none); a = the
+//       covered texels;
+//   (N + tx, ty), written here: the least-squares plane of alpha over the covered texels,
+//       alpha ≈ a0 + g.(p - centre) in texel units from the tile's centre:
+//       (a0, g.x, g.y, the largest |alpha - plane|);
+//   (tx, N + ty), written here: the same for the gaps w - alpha of the writes behind the nearest
+//       layer (every written channel a sample): where the layer behind is a face at an angle to
+//       the nearest one (a block's far face), the gap is not constant but planar.
+//   A plane that cannot be fitted (fewer than three samples, or collinear) is (0, 0, 0, 2).
+// The lookup (lookup.glsl, colouredByTiles) bounds the receiver's gap over its tile from its own
 // plane and alpha's, and takes `passing` when that bound lies behind the nearest layer and in
 // front of every other write: below the least gap, or below the gaps' plane.
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
@@ -51,14 +53,11 @@ vec3 writtenBehind(vec4 texel) {
 
 void main() {
     ivec2 at = ivec2(gl_FragCoord.xy);
-    ivec2 role = at & 1;  // (0, 0) counts, (1, 0) alpha's plane, (0, 1) the gaps' plane
-    if (role.x == 1 && role.y == 1) { outStats = vec4(0.0); return; }
-    bool gaps = role.y == 1;
     ivec2 size = textureSize(uMap, 0);
-    ivec2 first = (at >> 1) * uSide;
+    int tiles = size.x / uSide;
+    bool gaps = at.y >= tiles;  // renderTiles draws only the two regions
+    ivec2 first = (gaps ? at - ivec2(0, tiles) : at - ivec2(tiles, 0)) * uSide;
     float half_ = 0.5 * float(uSide);
-    vec3 passing = vec3(0.0);
-    float leastGap = 2.0;
     PlaneFit fit = PlaneFit(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     for (int j = 0; j < uSide; ++j)
         for (int i = 0; i < uSide; ++i) {
@@ -67,9 +66,7 @@ void main() {
             vec4 texel = texelFetch(uMap, p, 0);
             if (texel.a >= 1.0) continue;  // no translucent layer at this texel
             vec3 behind = writtenBehind(texel);
-            passing += vec3(equal(texel.rgb, vec3(1.0))) + behind;  // the nearest layer did not write λ
             vec3 gap = texel.rgb - texel.a;
-            leastGap = min(leastGap, min(min(mix(2.0, gap.r, behind.r), mix(2.0, gap.g, behind.g)), mix(2.0, gap.b, behind.b)));
             vec2 d = vec2(i, j) + 0.5 - half_;
             if (gaps) {
                 addSample(fit, d, gap.r, behind.r);
@@ -79,12 +76,6 @@ void main() {
                 addSample(fit, d, texel.a, 1.0);
             }
         }
-    if (role.x == 0 && role.y == 0) {
-        float m = float(uSide * uSide + 1);
-        int b = int(passing.b);
-        outStats = vec4(passing.r + m * float(b & 15), passing.g + m * float(b >> 4), leastGap, fit.n);
-        return;
-    }
     vec3 plane;
     if (!solve(fit, plane)) { outStats = vec4(0.0, 0.0, 0.0, 2.0); return; }  // never decides by this plane
     float deviation = 0.0;

@@ -15,13 +15,16 @@
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
 uniform int uSide;  // 4 or 8
 layout(location = 0) out vec4 outStats;
+// 2D maps: the counts through the nearest layer alone, into level log2(side) - 1 at the same
+// texel (nearest_layer.frag's header has the layout; cube faces have no such target).
+layout(location = 1) out vec4 outNearestCounts;
 
 void main() {
     ivec2 size = textureSize(uMap, 0);
     ivec2 first = ivec2(gl_FragCoord.xy) * uSide;
-    vec3 passing = vec3(0.0);
+    vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
     int covered = 0;
-    float farthest = 0.0;
+    float farthest = 0.0, leastGap = 2.0;
     for (int j = 0; j < uSide; ++j)
         for (int i = 0; i < uSide; ++i) {
             ivec2 p = first + ivec2(i, j);
@@ -33,7 +36,14 @@ void main() {
             passing += vec3(not(written));
             // Written channels hold their layer's depth; alpha (the nearest layer) is never farther.
             farthest = max(farthest, max(texel.a, max(max(written.r ? texel.r : 0.0, written.g ? texel.g : 0.0), written.b ? texel.b : 0.0)));
+            // MIN blending: a channel the nearest layer wrote holds exactly its depth (alpha).
+            vec3 behind = vec3(written) * vec3(notEqual(texel.rgb, vec3(texel.a)));  // a later layer wrote λ
+            passingNearest += vec3(not(written)) + behind;
+            vec3 gap = mix(vec3(2.0), texel.rgb - texel.a, bvec3(behind));
+            leastGap = min(leastGap, min(gap.r, min(gap.g, gap.b)));
         }
     float m = float(uSide * uSide + 1);
     outStats = vec4(passing.r + m * float(covered & 7), passing.g + m * float(covered >> 3), passing.b, farthest);
+    int b = int(passingNearest.b);
+    outNearestCounts = vec4(passingNearest.r + m * float(b & 15), passingNearest.g + m * float(b >> 4), leastGap, float(covered));
 }
