@@ -143,117 +143,164 @@ vec4 ownTexelCount(ShadowSite s, MapFace m, vec2 texel, vec4 v) {
     return v.a < receiver ? vec4(vec3(greaterThan(v.rgb, vec3(receiver))), 1.0) : vec4(0.0);
 }
 
-vec3 colouredByTiles(ShadowSite s, int side) {
-    MapFace m = mapFace(s);
-    float own = ownCoverage(s, m);
-    const int level = side == 8 ? 3 : 2;  // tiles.frag's level: log2(side)
-    vec2 tileCoord = m.texel / float(side) - 0.5;
-    ivec2 base = ivec2(floor(tileCoord));
-    vec2 f = tileCoord - vec2(base);
-    // The receiver's nearest depth over the four tiles: at one of their outer corners (it is planar).
-    vec2 lo = vec2(base) * float(side), hi = lo + 2.0 * float(side);
+// Where a receiver sits among the tiles: its face and texel, its own coverage, the 2 x 2 tiles
+// around it (base, bilinear weights f), its own tile, and its nearest depth over the four tiles.
+struct TileSite {
+    MapFace m;
+    float own;
+    int level;  // tiles.frag's level: log2(side)
+    ivec2 base;
+    vec2 f;
     float nearest;
+    int lastTile;    // the last tile, partial where the resolution is not a multiple of side
+    int levelTiles;  // the tiles that have counts in the level (a partial last tile has none)
+    vec2 first;      // the receiver's own tile, texel units
+};
+
+TileSite tileSite(ShadowSite s, int side) {
+    TileSite ts;
+    ts.m = mapFace(s);
+    ts.own = ownCoverage(s, ts.m);
+    ts.level = side == 8 ? 3 : 2;
+    vec2 tileCoord = ts.m.texel / float(side) - 0.5;
+    ts.base = ivec2(floor(tileCoord));
+    ts.f = tileCoord - vec2(ts.base);
+    // The receiver's nearest depth over the four tiles: at one of their outer corners (it is planar).
+    vec2 lo = vec2(ts.base) * float(side), hi = lo + 2.0 * float(side);
     if (s.cube) {
-        nearest = min(min(receiverAt(s, m, lo), receiverAt(s, m, hi)), min(receiverAt(s, m, vec2(lo.x, hi.y)), receiverAt(s, m, vec2(hi.x, lo.y))));
+        ts.nearest = min(min(receiverAt(s, ts.m, lo), receiverAt(s, ts.m, hi)),
+                         min(receiverAt(s, ts.m, vec2(lo.x, hi.y)), receiverAt(s, ts.m, vec2(hi.x, lo.y))));
     } else {  // tapReceiverDepth's plane, clamped as there
-        vec2 corner = mix(hi, lo, greaterThan(s.depthSlope, vec2(0.0))) - m.texel;
-        nearest = linearShadowDepth(s.light, s.depth + clamp(dot(s.depthSlope, corner), -0.01, 0.01)) * (1.0 - uStorageEpsilon);
+        vec2 corner = mix(hi, lo, greaterThan(s.depthSlope, vec2(0.0))) - ts.m.texel;
+        ts.nearest = linearShadowDepth(s.light, s.depth + clamp(dot(s.depthSlope, corner), -0.01, 0.01)) * (1.0 - uStorageEpsilon);
     }
-    int lastTile = int(ceil(s.resolution / float(side))) - 1;
-    // A resolution that is not a multiple of side leaves the last tile partial, and its counts
-    // outside the level: there the texels are counted.
-    int levelTiles = int(s.resolution) >> level;
-    vec2 first = floor(m.texel / float(side)) * float(side);  // the receiver's own tile
-    vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
-    float covered = 0.0, farthest = 0.0, leastGap = 2.0;
+    ts.lastTile = int(ceil(s.resolution / float(side))) - 1;
+    ts.levelTiles = int(s.resolution) >> ts.level;
+    ts.first = floor(ts.m.texel / float(side)) * float(side);
+    return ts;
+}
+
+// Tile q (0-3) of the 2 x 2 around the receiver, and whether its counts are outside the level.
+ivec2 regionTile(TileSite ts, int q, out bool missing) {
+    ivec2 t = clamp(ts.base + ivec2(q & 1, q >> 1), ivec2(0), ivec2(ts.lastTile));  // no neighbours across map (face) borders
+    missing = any(greaterThanEqual(t, ivec2(ts.levelTiles)));
+    return min(t, ivec2(ts.levelTiles - 1));
+}
+
+// Tile q's counts `v`, bilinearly weighted into sum(w passing), sum(w covered), and the farthest
+// depth any layer wrote in the four tiles.
+void addTileCounts(TileSite ts, int side, int q, bool missing, vec4 v, inout vec3 passing, inout float covered, inout float farthest) {
+    vec3 p;
+    float c;
+    tileCounts(v, side, p, c);
+    float w = ((q & 1) != 0 ? ts.f.x : 1.0 - ts.f.x) * ((q & 2) != 0 ? ts.f.y : 1.0 - ts.f.y);
+    passing += w * p;
+    covered += w * c;
+    farthest = max(farthest, missing ? 2.0 : v.a);
+}
+
+// Opaque receivers. One loop, one fetch per pass: passes 0-3 read the 2 x 2 tiles' counts (level
+// log2(side)), blended as sum(w passing) / sum(w covered) with w the bilinear weights; then,
+// unless those decide, the rest count the own tile's texels (level 0). llvmpipe runs an if's both
+// sides for every 8-pixel group and a loop's body at least once, but leaves a loop once no lane is
+// left in it: a loop over tiles and another over texels cost a fetch each where no layer covers
+// the receiver, this one costs one (measured: a second loop cost the default scene's opaque pass
+// 5 ms). The bound comes from a uniform: an unrolled loop would run every pass.
+vec3 colouredByTiles(ShadowSite s, int side) {
+    TileSite ts = tileSite(s, side);
+    vec3 passing = vec3(0.0);
+    float covered = 0.0, farthest = 0.0;
     vec4 acc = vec4(0.0);
-    bool tilesDecide = false, nearestDecides = false, byNearestLayer = kNearestLayer && uNearestLayer != 0 && !s.cube;
+    bool tilesDecide = false;
+    int passes = uTileSide > 0 ? 4 + uTileSide * uTileSide : 0;
+    for (int k = 0; k < passes; ++k) {
+        if (ts.own <= 0.0) break;  // no layer in front of the receiver's own texels
+        if (k == 4) {
+            tilesDecide = farthest < ts.nearest && covered > 0.0;
+            if (tilesDecide) break;
+        }
+        bool tile = k < 4, missing;
+        ivec2 t = regionTile(ts, k & 3, missing);
+        int e = k - 4;
+        vec2 texel = tile ? (vec2(t) + 0.5) * float(side) : ts.first + vec2(e % side, e / side) + 0.5;
+        vec4 v = levelTexel(s, ts.m, texel, tile ? ts.level : 0);
+        vec3 p = passing;
+        float c = covered, d = farthest;
+        addTileCounts(ts, side, k & 3, missing, v, p, c, d);
+        passing = tile ? p : passing;
+        covered = tile ? c : covered;
+        farthest = tile ? d : farthest;
+        acc += tile ? vec4(0.0) : ownTexelCount(s, ts.m, texel, v);
+    }
+    vec3 t = tilesDecide ? passing / covered : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
+    return mix(vec3(1.0), t, ts.own);
+}
+
+// Translucent receivers (the lighting program's MATERIAL_TRANSLUCENT build). Passes 0-3 read the
+// 2 x 2 tiles' counts as above. Unless those decide, passes 4-6 read the own tile's nearest-layer
+// statistics (level log2(side) - 1, nearest_layer.frag: counts, least gap and covered texels;
+// the layer's plane; the plane of the gaps behind it), which decide for a receiver behind that
+// layer at every covered texel of its tile and, by its gap, in front of every other layer's
+// write there (margins of 1.5 storage quanta, for the half-float rounding of alpha, the writes
+// and the planes): the back face of a pane behind its own front face, a block's far face behind
+// its near one. They count the very texels the texel loop would, with the same answer. Where
+// they do not decide either, a second loop counts the own tile texel by texel (level 0).
+// Measured on the glass scene (issue 11): that second, lean loop costs translucent receivers
+// 49 ms against 69 ms in the shared loop above; opaque ones would pay its empty pass everywhere.
+vec3 colouredByNearestLayer(ShadowSite s, int side) {
+    TileSite ts = tileSite(s, side);
+    vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
+    float covered = 0.0, farthest = 0.0, leastGap = 2.0, ownCovered = 0.0;
+    vec4 alphaPlane = vec4(0.0);
+    ivec2 ownTile = ivec2(ts.first) / side;
+    bool byNearestLayer = uNearestLayer != 0 && !s.cube && all(lessThan(ownTile, ivec2(ts.levelTiles)));  // not the partial last tile
     // One storage quantum of the receiver's depth (RGBA16F: 2^-10 of it); fp32 maps get a hair.
     float receiverDepth = linearShadowDepth(s.light, s.depth);
     float quantum = max(uStorageEpsilon, 1.0 / 1048576.0) * receiverDepth;
     // The receiver's linear depth per texel, for the gap bounds.
     vec2 gradient = vec2(linearShadowDepth(s.light, tapReceiverDepth(s, vec2(1.0, 0.0))),
                          linearShadowDepth(s.light, tapReceiverDepth(s, vec2(0.0, 1.0)))) - receiverDepth;
-    // Passes 0-3 read the 2 x 2 tiles' counts (level log2(side)), blended as
-    // sum(w passing) / sum(w covered) with w the bilinear weights. Unless those decide:
-    // - translucent receivers (kNearestLayer): passes 4-6 read the own tile's nearest-layer
-    //   statistics (level log2(side) - 1, nearest_layer.frag: counts, least gap and covered
-    //   texels; the layer's plane; the plane of the gaps behind it), which decide for a receiver
-    //   behind that layer at every covered texel of its tile and, by its gap, in front of every
-    //   other layer's write there (margins of 1.5 storage quanta, for the half-float rounding of
-    //   alpha, the writes and the planes): the back face of a pane behind its own front face, a
-    //   block's far face behind its near one. They count the very texels the texel loop would,
-    //   with the same answer. Where they do not decide either, a second loop counts the own
-    //   tile texel by texel (level 0);
-    // - opaque receivers: the same loop goes on to count the own tile's texels.
-    // llvmpipe runs an if's both sides for every 8-pixel group and a loop's body at least once,
-    // but leaves a loop once no lane is left in it, so each pass is one fetch, and the loop
-    // bounds come from uniforms (an unrolled loop would run every pass). Measured on the glass
-    // scene (issue 11): a second, lean loop over the texels costs translucent receivers 49 ms
-    // against 69 ms in the shared loop, but costs opaque ones its one empty pass everywhere
-    // (default scene, opaque pass +5 ms); hence the split by receiver.
-    int passes = uTileSide <= 0 ? 0 : kNearestLayer ? (byNearestLayer ? 7 : 4) : 4 + uTileSide * uTileSide;
-    ivec2 ownTile = ivec2(first) / side;
-    byNearestLayer = byNearestLayer && all(lessThan(ownTile, ivec2(levelTiles)));  // not the partial last tile
-    float ownCovered = 0.0;
-    vec4 alphaPlane = vec4(0.0);
+    int passes = uTileSide <= 0 ? 0 : byNearestLayer ? 7 : 4;
     for (int k = 0; k < passes; ++k) {
-        if (own <= 0.0) break;  // no layer in front of the receiver's own texels
-        if (k == 4) {
-            tilesDecide = farthest < nearest && covered > 0.0;
-            if (tilesDecide) break;
-        }
-        bool tile = k < 4, layerCounts = kNearestLayer && k == 4, layerPlane = kNearestLayer && k == 5, gapPlane = kNearestLayer && k == 6;
-        bool texelPass = !kNearestLayer && k >= 4;
-        int q = k & 3;
-        ivec2 t = clamp(base + ivec2(q & 1, q >> 1), ivec2(0), ivec2(lastTile));  // no neighbours across map (face) borders
-        bool missing = any(greaterThanEqual(t, ivec2(levelTiles)));
-        ivec2 inLevel = min(t, ivec2(levelTiles - 1));
-        int e = k - 4;
-        vec2 texel = texelPass ? first + vec2(e % side, e / side) + 0.5 : (vec2(inLevel) + 0.5) * float(side);
+        if (ts.own <= 0.0) break;  // no layer in front of the receiver's own texels
+        if (k == 4 && farthest < ts.nearest && covered > 0.0) break;  // the tiles decide
+        bool tile = k < 4, layerCounts = k == 4, layerPlane = k == 5, gapPlane = k == 6, missing;
+        ivec2 t = regionTile(ts, k & 3, missing);
         // One fetch whatever the pass (llvmpipe would run both sides of a choice between two).
-        int lod = tile ? level : texelPass ? 0 : level - 1;
-        ivec2 layerTexel = (ownTile + levelTiles * ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (level - 1);  // in level-0 texels
-        vec4 v = levelTexel(s, m, layerCounts || layerPlane || gapPlane ? vec2(layerTexel) + 0.5 : texel, lod);
-        float w = ((q & 1) != 0 ? f.x : 1.0 - f.x) * ((q & 2) != 0 ? f.y : 1.0 - f.y);
-        // A tile: its counts, bilinearly weighted.
-        vec3 p;
-        float c;
-        tileCounts(v, side, p, c);
-        passing += tile ? w * p : vec3(0.0);
-        covered += tile ? w * c : 0.0;
-        farthest = tile ? max(farthest, missing ? 2.0 : v.a) : farthest;
-        if (kNearestLayer) {  // folded away for opaque receivers
-            // The own tile through its nearest layer alone: its counts, least gap and covered
-            // texels, alpha's plane, then the gaps' plane, and whether the receiver's gap fits:
-            // behind alpha everywhere, and in front of every other write, by the least gap or
-            // by the gaps' plane (gap - gaps' plane, bounded as one plane against alpha + gaps).
-            passingNearest = layerCounts ? nearestLayerCounts(v, side) : passingNearest;
-            leastGap = layerCounts ? v.b : leastGap;
-            ownCovered = layerCounts ? v.a : ownCovered;
-            alphaPlane = layerPlane ? v : alphaPlane;
-            vec2 centre = first + 0.5 * float(side);
-            vec2 gap = gapBounds(receiverDepth, gradient, m.texel, centre, side, alphaPlane);
-            vec2 beyondWrites = gapBounds(receiverDepth, gradient, m.texel, centre, side, alphaPlane + v);
-            bool fits = gap.x > 1.5 * quantum && (gap.y <= leastGap + 1.5 * quantum || beyondWrites.y <= 1.5 * quantum);
-            byNearestLayer = byNearestLayer && (!gapPlane || fits);
-        } else {
-            acc += texelPass ? ownTexelCount(s, m, texel, v) : vec4(0.0);
-        }
+        ivec2 layerTexel = (ownTile + ts.levelTiles * ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (ts.level - 1);  // in level-0 texels
+        vec4 v = levelTexel(s, ts.m, tile ? (vec2(t) + 0.5) * float(side) : vec2(layerTexel) + 0.5, tile ? ts.level : ts.level - 1);
+        vec3 p = passing;
+        float c = covered, d = farthest;
+        addTileCounts(ts, side, k & 3, missing, v, p, c, d);
+        passing = tile ? p : passing;
+        covered = tile ? c : covered;
+        farthest = tile ? d : farthest;
+        // The own tile through its nearest layer alone: its counts, least gap and covered texels,
+        // alpha's plane, then the gaps' plane, and whether the receiver's gap fits: behind alpha
+        // everywhere, and in front of every other write, by the least gap or by the gaps' plane
+        // (gap - gaps' plane, bounded as one plane against alpha + gaps).
+        passingNearest = layerCounts ? nearestLayerCounts(v, side) : passingNearest;
+        leastGap = layerCounts ? v.b : leastGap;
+        ownCovered = layerCounts ? v.a : ownCovered;
+        alphaPlane = layerPlane ? v : alphaPlane;
+        vec2 centre = ts.first + 0.5 * float(side);
+        vec2 gap = gapBounds(receiverDepth, gradient, ts.m.texel, centre, side, alphaPlane);
+        vec2 beyondWrites = gapBounds(receiverDepth, gradient, ts.m.texel, centre, side, alphaPlane + v);
+        bool fits = gap.x > 1.5 * quantum && (gap.y <= leastGap + 1.5 * quantum || beyondWrites.y <= 1.5 * quantum);
+        byNearestLayer = byNearestLayer && (!gapPlane || fits);
     }
-    if (kNearestLayer) {
-        tilesDecide = farthest < nearest && covered > 0.0;  // also where the loop ended before pass 4
-        nearestDecides = !tilesDecide && byNearestLayer && ownCovered > 0.0;
-        int texels = own > 0.0 && !tilesDecide && !nearestDecides ? uTileSide * uTileSide : 0;
-        for (int e = 0; e < texels; ++e) {
-            vec2 texel = first + vec2(e % side, e / side) + 0.5;
-            acc += ownTexelCount(s, m, texel, levelTexel(s, m, texel, 0));
-        }
+    bool tilesDecide = farthest < ts.nearest && covered > 0.0;  // also where the loop ended before pass 4
+    bool nearestDecides = !tilesDecide && byNearestLayer && ownCovered > 0.0;
+    vec4 acc = vec4(0.0);
+    int texels = ts.own > 0.0 && !tilesDecide && !nearestDecides ? uTileSide * uTileSide : 0;
+    for (int e = 0; e < texels; ++e) {
+        vec2 texel = ts.first + vec2(e % side, e / side) + 0.5;
+        acc += ownTexelCount(s, ts.m, texel, levelTexel(s, ts.m, texel, 0));
     }
     vec3 t = tilesDecide ? passing / covered
            : nearestDecides ? passingNearest / ownCovered
                             : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
-    return mix(vec3(1.0), t, own);
+    return mix(vec3(1.0), t, ts.own);
 }
 
 // The box filters on a cube face: the side x side texels of the face's tile grid that hold the
@@ -292,7 +339,8 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
         // stratified share (windows across tile borders would mix partial, unstratified tiles).
         vec2 texel = s.coord.xy * s.resolution;
         vec2 corner = s.cube ? vec2(-h) : floor(texel / float(side)) * float(side) + 0.5 - texel;
-        if (kSeparateOpaque && kCoverage) return compareAt(s, vec2(0.0), 0.0) * colouredByTiles(s, side);
+        if (kSeparateOpaque && kCoverage)
+            return compareAt(s, vec2(0.0), 0.0) * (kNearestLayer ? colouredByNearestLayer(s, side) : colouredByTiles(s, side));
         if (kSeparateOpaque && !s.cube && noLayerInFront(s, corner, side)) return compareAt(s, vec2(0.0), 0.0) * vec3(1.0);
         if (s.cube) {
             sum = cubeTileSum(s, side);
