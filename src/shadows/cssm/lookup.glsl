@@ -188,15 +188,17 @@ ivec2 regionTile(TileSite ts, int q, out bool missing) {
 }
 
 // Tile q's counts `v`, bilinearly weighted into sum(w passing), sum(w covered), and the farthest
-// depth any layer wrote in the four tiles.
-void addTileCounts(TileSite ts, int side, int q, bool missing, vec4 v, inout vec3 passing, inout float covered, inout float farthest) {
+// depth any layer wrote in the four tiles; nothing where `counted` is false (a loop pass that
+// read something else: every pass runs this, as llvmpipe runs both sides of an if).
+void addTileCounts(TileSite ts, int side, int q, bool counted, bool missing, vec4 v, inout vec3 passing, inout float covered,
+                   inout float farthest) {
     vec3 p;
     float c;
     tileCounts(v, side, p, c);
-    float w = ((q & 1) != 0 ? ts.f.x : 1.0 - ts.f.x) * ((q & 2) != 0 ? ts.f.y : 1.0 - ts.f.y);
+    float w = counted ? ((q & 1) != 0 ? ts.f.x : 1.0 - ts.f.x) * ((q & 2) != 0 ? ts.f.y : 1.0 - ts.f.y) : 0.0;
     passing += w * p;
     covered += w * c;
-    farthest = max(farthest, missing ? 2.0 : v.a);
+    farthest = counted ? max(farthest, missing ? 2.0 : v.a) : farthest;
 }
 
 // Opaque receivers. One loop, one fetch per pass: passes 0-3 read the 2 x 2 tiles' counts (level
@@ -224,12 +226,7 @@ vec3 colouredByTiles(ShadowSite s, int side) {
         int e = k - 4;
         vec2 texel = tile ? (vec2(t) + 0.5) * float(side) : ts.first + vec2(e % side, e / side) + 0.5;
         vec4 v = levelTexel(s, ts.m, texel, tile ? ts.level : 0);
-        vec3 p = passing;
-        float c = covered, d = farthest;
-        addTileCounts(ts, side, k & 3, missing, v, p, c, d);
-        passing = tile ? p : passing;
-        covered = tile ? c : covered;
-        farthest = tile ? d : farthest;
+        addTileCounts(ts, side, k & 3, tile, missing, v, passing, covered, farthest);
         acc += tile ? vec4(0.0) : ownTexelCount(s, ts.m, texel, v);
     }
     vec3 t = tilesDecide ? passing / covered : (acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0));
@@ -260,6 +257,7 @@ vec3 colouredByNearestLayer(ShadowSite s, int side) {
     // The receiver's linear depth per texel, for the gap bounds.
     vec2 gradient = vec2(linearShadowDepth(s.light, tapReceiverDepth(s, vec2(1.0, 0.0))),
                          linearShadowDepth(s.light, tapReceiverDepth(s, vec2(0.0, 1.0)))) - receiverDepth;
+    vec2 centre = ts.first + 0.5 * float(side);  // of the own tile
     int passes = uTileSide <= 0 ? 0 : byNearestLayer ? 7 : 4;
     for (int k = 0; k < passes; ++k) {
         if (ts.own <= 0.0) break;  // no layer in front of the receiver's own texels
@@ -269,12 +267,7 @@ vec3 colouredByNearestLayer(ShadowSite s, int side) {
         // One fetch whatever the pass (llvmpipe would run both sides of a choice between two).
         ivec2 layerTexel = (ownTile + ts.levelTiles * ivec2(layerPlane ? 1 : 0, gapPlane ? 1 : 0)) << (ts.level - 1);  // in level-0 texels
         vec4 v = levelTexel(s, ts.m, tile ? (vec2(t) + 0.5) * float(side) : vec2(layerTexel) + 0.5, tile ? ts.level : ts.level - 1);
-        vec3 p = passing;
-        float c = covered, d = farthest;
-        addTileCounts(ts, side, k & 3, missing, v, p, c, d);
-        passing = tile ? p : passing;
-        covered = tile ? c : covered;
-        farthest = tile ? d : farthest;
+        addTileCounts(ts, side, k & 3, tile, missing, v, passing, covered, farthest);
         // The own tile through its nearest layer alone: its counts, least gap and covered texels,
         // alpha's plane, then the gaps' plane, and whether the receiver's gap fits: behind alpha
         // everywhere, and in front of every other write, by the least gap or by the gaps' plane
@@ -283,7 +276,6 @@ vec3 colouredByNearestLayer(ShadowSite s, int side) {
         leastGap = layerCounts ? v.b : leastGap;
         ownCovered = layerCounts ? v.a : ownCovered;
         alphaPlane = layerPlane ? v : alphaPlane;
-        vec2 centre = ts.first + 0.5 * float(side);
         vec2 gap = gapBounds(receiverDepth, gradient, ts.m.texel, centre, side, alphaPlane);
         vec2 beyondWrites = gapBounds(receiverDepth, gradient, ts.m.texel, centre, side, alphaPlane + v);
         bool fits = gap.x > 1.5 * quantum && (gap.y <= leastGap + 1.5 * quantum || beyondWrites.y <= 1.5 * quantum);

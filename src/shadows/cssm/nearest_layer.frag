@@ -23,6 +23,7 @@
 // The lookup (lookup.glsl, colouredByTiles) bounds the receiver's gap over its tile from its own
 // plane and alpha's, and takes `passing` when that bound lies behind the nearest layer and in
 // front of every other write: below the least gap, or below the gaps' plane.
+#include "src/shadows/cssm/layers.glsl"
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
 uniform int uSide;                           // 4 or 8
 layout(location = 0) out vec4 outStats;
@@ -43,12 +44,6 @@ bool solve(PlaneFit f, out vec3 plane) {
     if (f.n < 3.0 || abs(determinant(normal)) < 1e-3) return false;
     plane = inverse(normal) * vec3(f.sv, f.sxv, f.syv);
     return true;
-}
-
-// Per channel: 1 where a layer behind the nearest one wrote λ (MIN blending: a channel the
-// nearest layer wrote holds exactly its depth, alpha).
-vec3 writtenBehind(vec4 texel) {
-    return vec3(lessThan(texel.rgb, vec3(1.0))) * vec3(notEqual(texel.rgb, vec3(texel.a)));
 }
 
 void main() {

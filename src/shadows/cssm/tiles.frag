@@ -12,6 +12,7 @@
 // Packing, exact in RGBA16F (integers up to 2048, and a depth the map itself stored):
 //   r = passing.r + M (covered mod 8), g = passing.g + M floor(covered / 8), b = passing.b,
 //   with M = side² + 1 (tileCounts in lookup.glsl unpacks it).
+#include "src/shadows/cssm/layers.glsl"
 layout(binding = 0) uniform sampler2D uMap;  // level 0 of the colour map (face)
 uniform int uSide;  // 4 or 8
 layout(location = 0) out vec4 outStats;
@@ -36,8 +37,7 @@ void main() {
             passing += vec3(not(written));
             // Written channels hold their layer's depth; alpha (the nearest layer) is never farther.
             farthest = max(farthest, max(texel.a, max(max(written.r ? texel.r : 0.0, written.g ? texel.g : 0.0), written.b ? texel.b : 0.0)));
-            // MIN blending: a channel the nearest layer wrote holds exactly its depth (alpha).
-            vec3 behind = vec3(written) * vec3(notEqual(texel.rgb, vec3(texel.a)));  // a later layer wrote λ
+            vec3 behind = writtenBehind(texel);
             passingNearest += vec3(not(written)) + behind;
             vec3 gap = mix(vec3(2.0), texel.rgb - texel.a, bvec3(behind));
             leastGap = min(leastGap, min(gap.r, min(gap.g, gap.b)));
