@@ -20,7 +20,10 @@ float fragmentRandom(uint stream) {
     uvec3 p = uvec3(gl_FragCoord.xy, floatBitsToUint(gl_FragCoord.z));
     if (uRandomGenerator == kRandomSinFract) {
         vec3 q = vec3(gl_FragCoord.xy, gl_FragCoord.z * 4096.0) + float(stream) * 17.0 + float(uFrameSeed % 1024) * 0.37;
-        return fract(sin(dot(q, vec3(12.9898, 78.233, 37.719))) * 43758.5453);
+        float x = dot(q, vec3(12.9898, 78.233, 37.719));
+        // Reduced to [0, 2pi) first: a GPU's sine unit loses precision far from 0 (on an H100,
+        // sin of x ~ 1e5 moved the mean of xi so far that black nylon read 0.786 instead of 0.75).
+        return fract(sin(x - 6.2831853 * floor(x * 0.15915494)) * 43758.5453);
     }
     uint h = pcgHash(p.x ^ pcgHash(p.y ^ pcgHash(p.z ^ pcgHash(stream ^ pcgHash(uint(uFrameSeed))))));
     return float(h >> 8) * (1.0 / 16777216.0);

@@ -1,6 +1,7 @@
 #include "bench/FloorRenderer.h"
 
 #include "gl/PassState.h"
+#include "gpu/ShaderContract.h"
 #include "shadows/LightSpace.h"
 
 #include <stdexcept>
@@ -16,6 +17,7 @@ FloorRenderer::FloorRenderer(const scene::Scene& scene, Mode mode, int shadowRes
                                               .fragment = "src/bench/glsl/floor_lambert.frag",
                                               .defines = {std::string("SHADOWED ") + (mode == Mode::Lambert ? "1" : "0")}});
     depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, resolution_, resolution_);
+    depth_.setDepthCompare(true);  // as compare_: a shadow sampler reads it right with or without the sampler object
     depthFbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
     depthFbo_.setNoColor();
     depthFbo_.checkComplete("floor depth map");
@@ -58,9 +60,10 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
     if (mode_ != Mode::DepthOnly) {
         gl::ScopedPassState state(gl::PassState::depthOnly());
         glClearNamedFramebufferfv(target, GL_DEPTH, 0, &farDepth);
-        depth_.bind(0);
-        compare_.bind(0);
-        lambertProgram_.set("uShadowMap", 0);
+        // The renderer's unit for 2D shadow maps: unit 0 is where GpuScene::draw binds a diffuse texture.
+        depth_.bind(gpu::kUnitShadow2D);
+        compare_.bind(gpu::kUnitShadow2D);
+        lambertProgram_.set("uShadowMap", gpu::kUnitShadow2D);
         lambertProgram_.set("uViewProj", camera.projection(aspect) * camera.view());
         lambertProgram_.set("uShadowMatrix", shadows::kClipToTexture * space.viewProj[0]);
         const glm::vec3 toLight = light.type == scene::Light::Type::Directional ? -light.direction : glm::normalize(light.position);
@@ -68,7 +71,8 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
         lambertProgram_.set("uBias", 0.002f);
         for (const render::Draw& d : draws)
             if (d.visible && !d.translucent) gpu_.draw(d, lambertProgram_);
-        gl::Sampler::unbind(0);
+        gl::Sampler::unbind(gpu::kUnitShadow2D);
+        glUseProgram(0);  // a deleted program stays current until replaced (NVIDIA validates it on the next clear)
     }
     timer_.end(render::Pass::Opaque);
     timer_.endFrame();

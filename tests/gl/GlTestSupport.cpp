@@ -5,12 +5,32 @@
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
 
+#include <dlfcn.h>
+#include <execinfo.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
+#include <sstream>
 
 namespace penumbra::test {
 
 namespace {
+// Where the GL call that raised a debug message came from (synchronous output): module offsets,
+// which `addr2line -f -C -e <module>` resolves from the unstripped build, for drivers this machine
+// lacks (NVIDIA's warnings arrive only on a GPU machine, where the bundled binaries are stripped).
+std::string callSite() {
+    void* frames[24];
+    const int n = backtrace(frames, 24);
+    std::ostringstream out;
+    for (int i = 2; i < n; ++i) {
+        Dl_info info{};
+        if (dladdr(frames[i], &info) == 0 || info.dli_fname == nullptr) continue;
+        const std::string module = info.dli_fname;
+        out << "\n  " << module.substr(module.find_last_of('/') + 1) << " +0x" << std::hex
+            << (reinterpret_cast<std::uintptr_t>(frames[i]) - reinterpret_cast<std::uintptr_t>(info.dli_fbase)) << std::dec;
+    }
+    return out.str();
+}
+
 class GlEnvironment : public ::testing::Environment {
 public:
     void SetUp() override {
@@ -19,7 +39,8 @@ public:
         // Every GL error and every driver warning of medium or high severity (undefined
         // behaviour, ...) fails the test that caused it; the project's own warnings are separate
         // (log::takeWarnings).
-        gl::setDebugMessageHook([](const char* message) { ADD_FAILURE() << "GL debug message: " << message; });
+        gl::setDebugMessageHook(
+            [](const char* message) { ADD_FAILURE() << "GL debug message: " << message << "\ncalled from:" << callSite(); });
     }
     void TearDown() override { context_.reset(); }
 

@@ -63,6 +63,10 @@ void ColoredStochasticShadowMap::ensure(std::size_t i, const DepthAndTintMaps::L
     m.colour = m.cube ? gl::Texture::createCube(format, res, levels) : gl::Texture::create2D(format, res, res, levels);
     // Stochastic texels must not be averaged by the sampler; the lookup picks its level explicitly.
     m.colour.setFilter(levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST, GL_NEAREST);
+    // New storage holds whatever the driver left there (NVIDIA: earlier allocations' bytes;
+    // llvmpipe: zeros). The levels between 0 and the statistics are never drawn: zero them once,
+    // so that the map is the same texel for texel on every driver (ShadowReuse compares every level).
+    for (int level = 1; level < levels; ++level) glClearTexImage(m.colour.id(), level, GL_RGBA, GL_FLOAT, nullptr);
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
         m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
         gl::Framebuffer fb;
