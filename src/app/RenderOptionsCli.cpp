@@ -27,6 +27,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     command.add_flag_callback(
         "--whole-casters", [&options] { options.clusterCasters = false; },
         "draw big meshes whole into every shadow map they reach (default: cull their clusters per cascade, layer and cube face)");
+    command.add_flag("--depth-prepass", options.depthPrepass,
+                     "draw the opaque surfaces' depth first, then shade each visible pixel once (same pixels; pays with "
+                     "overdraw and dear shading, e.g. on a GPU)");
     command.add_option_function<std::vector<std::string>>(
         "--param",
         [&options](const std::vector<std::string>& texts) {

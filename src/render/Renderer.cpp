@@ -115,7 +115,7 @@ std::string Renderer::reloadShaders() {
         overlay_ = std::move(passes.overlay);
         lines_ = std::move(passes.lines);
         oit_.reset();  // rebuilt from the new files on first use
-        occluder_ = {};
+        depthFirst_.reset();
         return "";
     } catch (const std::exception& e) {
         return e.what();
@@ -248,7 +248,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     {
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
-        drawOccluders(draws, camera, aspect);
+        drawDepthFirst(draws, camera, aspect);
         drawSurfaces(draws, false, camera, aspect);
         if (options_.debugOverlay) drawDebugLines(camera, aspect);
         timer_.end(Pass::Opaque);
@@ -355,6 +355,8 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     if (translucent) {
         state.withBlend(overTransmittance());
         state.depthWrite = false;
+    } else if (options_.depthPrepass) {
+        state.depthWrite = false;  // the pre-pass wrote it; unwritten, early tests survive the alpha test's discard
     }
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
@@ -371,20 +373,22 @@ void Renderer::setReceivers(std::vector<bool> own, bool ownPixelsOnly) {
     ownPixelsOnly_ = ownPixelsOnly;
 }
 
-// The opaque objects another renderer shades, into depth only (alpha-tested texels stay holes),
-// before this renderer's own: they hide its surfaces where they are in front.
-void Renderer::drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
-    if (ownObjects_.empty()) return;
-    if (!occluder_.id())  // the shadow passes' caster shaders, with the camera as the "light"
-        occluder_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
-                                        .fragment = "src/shadows/common/glsl/depth.frag",
-                                        .defines = {"ALPHA_TEST 1"}});
-    occluder_.set("uLightViewProj", camera.projection(aspect) * camera.view());
+// Opaque surfaces into depth only (alpha-tested texels stay holes) before the lighting pass: the
+// objects another renderer shades, which hide this renderer's own where they are in front, and
+// with RenderOptions::depthPrepass this renderer's own too. caster.vert computes gl_Position as
+// lighting.vert does, both `invariant`, so the lighting pass's LEQUAL test passes exactly the
+// nearest surface.
+void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
+    if (ownObjects_.empty() && !options_.depthPrepass) return;
+    // The shadow passes' caster programs, with the camera as the "light" (built on first use).
+    if (!depthFirst_) depthFirst_ = std::make_unique<shadows::DepthCasterProgram>();
+    depthFirst_->set("uLightViewProj", camera.projection(aspect) * camera.view());
+    const shadows::DrawPrograms programs = *depthFirst_;
     gl::PassState state = gl::PassState::depthOnly();
     state.colorWrite = glm::bvec4(false);
     const gl::ScopedPassState scope(state);
     for (const Draw& d : draws)
-        if (d.visible && !d.translucent && !ownObject(d.object)) gpu_.draw(d, occluder_);
+        if (d.visible && !d.translucent && (options_.depthPrepass || !ownObject(d.object))) gpu_.draw(d, programs.of(*d.material));
 }
 
 void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {

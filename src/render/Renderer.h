@@ -12,6 +12,7 @@
 #include "render/GpuScene.h"
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
+#include "shadows/common/DepthCasterProgram.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
 #include "shadows/ShadowTechnique.h"
@@ -59,6 +60,11 @@ struct RenderOptions {
     // its cascade, layer or cube face (render/MeshClusters.h). false draws such parts whole: the
     // same maps, for measuring what the clusters save. Read when the Renderer is made.
     bool clusterCasters = true;
+    // Draw the opaque surfaces' depth first (the alpha-tested casters' program, camera as the
+    // light), then shade with depth writes off: the lighting shader runs once per visible pixel
+    // instead of once per fragment. Pays where overdraw is high and shading dear (a GPU, the
+    // dragon, PCSS); on llvmpipe's default scene it cost more than it saved. Same pixels.
+    bool depthPrepass = false;
     // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
     // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
     bool requireRegions = false;
@@ -120,7 +126,7 @@ public:
 private:
     void ensureTargets(int width, int height);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
-    void drawOccluders(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
+    void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
     bool ownObject(std::size_t object) const { return ownObjects_.empty() || (object < ownObjects_.size() && ownObjects_[object]); }
     void useLightLayout(std::vector<std::string> layout);
     std::vector<std::string> lightingDefines(const shadows::ShadowTechnique& technique) const;
@@ -138,7 +144,7 @@ private:
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
-    gl::Program occluder_;  // depth of the objects another renderer shades (built on first use)
+    std::unique_ptr<shadows::DepthCasterProgram> depthFirst_;  // depth of the pre-pass / of another renderer's objects
     std::vector<std::string> lightLayout_;      // the light layout's defines (render/LightingProgram.h)
     std::vector<std::string> lightingDefines_;  // what lighting_ was built with: the layout's and the technique's
     gl::Buffer lineVertices_;

@@ -179,6 +179,36 @@ TEST_P(AlphaTestedCasters, CutOutTexelsCastNoShadow) {
 // One technique per kind of depth map: DepthAndTintMaps, LayeredDepthMap, moment maps.
 INSTANTIATE_TEST_SUITE_P(EveryDepthMap, AlphaTestedCasters, ::testing::Values("hard", "cascaded", "vsm"));
 
+// The depth pre-pass (RenderOptions::depthPrepass) shades each visible pixel once and must
+// change no pixel: overdraw (a sphere behind a box), a plate whose every texel is alpha-tested
+// away in front of both (the pre-pass must leave its holes too), a green pane (translucent pass
+// against the pre-pass's depth), and techniques whose lookups differ in kind.
+class DepthPrepass : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DepthPrepass, ChangesNoPixel) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 4, 7], "target": [0, 0.5, 0], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "size": 0.5, "shadow": { "resolution": 512 } },
+                  { "type": "point", "position": [2, 3, 2], "intensity": 0.5, "shadow": { "resolution": 256 } } ],
+      "objects": [ { "shape": "plane", "size": [12, 12] },
+        { "shape": "sphere", "radius": 0.8, "position": [0, 0.8, -1.5] },
+        { "shape": "box", "size": [1.5, 1.5, 1.5], "position": [0, 0.75, 0] },
+        { "shape": "plane", "size": [3, 3], "position": [0, 1.5, 2], "rotation_deg": [90, 0, 0],
+          "material": { "texture": "quadrants.png", "alpha_cutoff": 1.1 } },
+        { "shape": "plane", "size": [1, 1], "position": [1.5, 1.2, 1], "rotation_deg": [90, 0, 0],
+          "material": { "transmission": [0.1, 0.9, 0.1] } } ] })");
+    render::RenderOptions options{.technique = GetParam()};
+    const std::vector<std::uint8_t> shaded = renderRgba8(s, options, 160, 120);
+    options.depthPrepass = true;
+    const std::vector<std::uint8_t> prepassed = renderRgba8(s, options, 160, 120);
+    ASSERT_EQ(shaded.size(), prepassed.size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < shaded.size(); ++i) differing += shaded[i] != prepassed[i];
+    EXPECT_EQ(differing, 0u) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, DepthPrepass, ::testing::Values("hard", "pcss", "cssm2", "shadow-volumes"));
+
 TEST(Fog, FarSurfacesFadeToTheBackground) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_deg": 60, "far": 100 },

@@ -4,6 +4,10 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
 
+// The camera depth pre-pass (caster.vert) and the lighting pass (lighting.vert) must put every
+// vertex at the same depth, bit for bit (Renderer::drawDepthFirst).
+invariant gl_Position;
+
 uniform mat4 uModel;
 uniform mat4 uLightViewProj;
 // World half-space kept when GL_CLIP_DISTANCE0 is on (dot(plane, P) >= 0): warped maps (PSM,
