@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The NVIDIA measurements of the README's "Measured on an NVIDIA H100", in one run (~7 min on an
+# H100). On the GPU machine, from the project root, after building here, `scripts/fetch-assets.sh`
+# and `../shared/tools/gpu-bundle.sh`:
+#     source .gpu/env.sh; scripts/gpu-measure.sh [OUT_DIR]
+# Writes gltests.log (the GL suite against the driver: its warnings fail tests) and bench.log (every
+# table) to OUT_DIR (default: $OUT where the device tool sets it, else ./gpu-out). Each step has a
+# time limit and logs its start, end and the SM clock, so a cut-off run still says how far it got.
+set -u
+out=${1:-${OUT:-gpu-out}}
+mkdir -p "$out"
+log=$out/bench.log
+work=$(mktemp -d)
+step() {
+    local name=$1 limit=$2
+    shift 2
+    echo "=== $name ($(date +%T), SM clock $(nvidia-smi --query-gpu=clocks.sm --format=csv,noheader 2>/dev/null))" >>"$log"
+    timeout "$limit" "$@" >>"$log" 2>&1
+    echo "=== $name: exit $? ($(date +%T))" >>"$log"
+}
+(cd "$work" && timeout 300 penumbra_gl_tests --gtest_brief=1 >"$out/gltests.log" 2>&1; echo "exit $?" >>"$out/gltests.log")
+short=(--no-images --seconds 1 --warmup-seconds 1)
+hd=(--size 1920x1080 --shadow-res 2048)
+# The GPU idles at 345 MHz: a warm-up run first, never timed.
+step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmup-seconds 5 --no-images --out "$work/warm"
+step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
+step "default scene, maps redrawn" 150 penumbra bench --techniques all "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/redrawn"
+if [ -f bench/assets/dragon_vrip.ply ]; then
+    dragon=none,hard,cssm2,cssm1,pcf-poisson16,pcss,cascaded,lispsm,psm,vsm,msm,floor-depth,floor-lambert,floor-unshadowed
+    step "dragon" 120 penumbra bench bench/dragon.json --techniques $dragon "${hd[@]}" "${short[@]}" --out "$work/dragon"
+    step "dragon, maps redrawn" 120 penumbra bench bench/dragon.json --techniques $dragon "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/dragon-redrawn"
+else
+    echo "=== dragon: skipped (bench/assets/dragon_vrip.ply missing: scripts/fetch-assets.sh)" >>"$log"
+fi
+step "glass scene" 60 penumbra bench scenes/glass.json --techniques none,hard,cssm2,cssm1 "${short[@]}" --out "$work/glass"
+step "floor" 60 penumbra bench --suite floor --calibrate "${short[@]}" --out "$work/floor"
+step "texel scaling" 80 penumbra bench --techniques hard --shadow-res 1024,2048,4096,8192 --size 1920x1080 --redraw-shadow-maps "${short[@]}" --out "$work/texels"
+step "triangle scaling" 120 penumbra bench --suite triangle-scaling "${short[@]}" --out "$work/scaling"
+step "compare, default scene" 100 penumbra compare --out "$work/compare-default"
+step "compare, glass scene" 100 penumbra compare scenes/glass.json --out "$work/compare-glass"
+echo "driver warnings: $(grep -c 'warning: GL' "$log")" >>"$log"
+rm -rf "$work"
