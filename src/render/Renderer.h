@@ -12,7 +12,6 @@
 #include "render/GpuScene.h"
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
-#include "shadows/common/DepthCasterProgram.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
 #include "shadows/ShadowTechnique.h"
@@ -144,7 +143,9 @@ private:
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
-    std::unique_ptr<shadows::DepthCasterProgram> depthFirst_;  // depth of the pre-pass / of another renderer's objects
+    // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster shaders
+    // (an empty fragment stage, and the alpha test for alpha-tested materials), built on first use.
+    gl::Program depthFirst_, depthFirstAlphaTested_;
     std::vector<std::string> lightLayout_;      // the light layout's defines (render/LightingProgram.h)
     std::vector<std::string> lightingDefines_;  // what lighting_ was built with: the layout's and the technique's
     gl::Buffer lineVertices_;

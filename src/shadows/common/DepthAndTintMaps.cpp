@@ -41,6 +41,12 @@ DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
                                        .fragment = "src/shadows/common/glsl/transmit.frag"});
 }
 
+void DepthAndTintMaps::setWithTint(bool withTint) {
+    if (withTint == withTint_) return;
+    withTint_ = withTint;
+    maps_.clear();
+}
+
 void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     if (maps_.size() <= i) maps_.resize(i + 1);
     LightMaps& m = maps_[i];

@@ -58,6 +58,8 @@ public:
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
     explicit DepthAndTintMaps(bool withTint = true);
+    // Turns the tint maps on or off; the maps are made again on the next render.
+    void setWithTint(bool withTint);
     // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
     // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
     // translucent casters need it as the depth test of the tint pass, and then only under them

@@ -41,6 +41,10 @@ std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {
                             "box filters with coverage: decide a receiver just behind the nearest translucent layer (a "
                             "pane's back face) from per-tile statistics of that layer, instead of counting its tile "
                             "texel by texel"),
+            Parameter::flag("tint_behind_all", tintBehindAll_,
+                            "box filters with coverage: a receiver behind every translucent layer around it takes the "
+                            "transmittance product of a deterministic tint map (exact, noise-free); the stochastic counts "
+                            "remain for receivers between layers, where a product of every layer would be wrong"),
             Parameter::real("radius_texels", radiusTexels_, 0.0f, 8.0f,
                             "Poisson / random filter radius; 0: automatic, so that taps land on distinct texels"),
             Parameter::choice("rng", generator_, {"pcg", "sin-fract"}, "per-fragment random number generator"),
@@ -156,7 +160,8 @@ std::uint64_t ColoredStochasticShadowMap::colourKey(std::size_t light, std::size
 }
 
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
-    depth_.render(frame);  // 1. opaque casters' depth
+    depth_.setWithTint(tintBehindAll());
+    depth_.render(frame);  // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance)
     gl::DebugGroup group(name().c_str());
     casters_.set("uRandomGenerator", generator_);
     casters_.set("uXi", xi_);
@@ -225,6 +230,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uTileSide", tileSide());
     lighting.set("uNearestLayer", decideByNearestLayer_ ? 1 : 0);
+    lighting.set("uTintBehindAll", tintBehindAll() ? 1 : 0);
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
     poisson_.upload(lighting);
 }

@@ -71,6 +71,7 @@ private:
     };
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
+    bool tintBehindAll() const { return usesTiles() && tintBehindAll_; }  // the lookup reads the tint maps
     int tileSide() const;
     void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect);
     // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).
@@ -79,9 +80,9 @@ private:
     Variant variant_;
     int filter_ = gpu::kCssmBox64, generator_ = gpu::kRandomPcg, xi_ = gpu::kXiStratified;
     float radiusTexels_ = 0.0f;
-    bool fp16_, separateOpaque_ = true, coverage_ = true, decideByNearestLayer_ = true;
+    bool fp16_, separateOpaque_ = true, coverage_ = true, decideByNearestLayer_ = true, tintBehindAll_ = true;
     PoissonDisk poisson_;
-    DepthAndTintMaps depth_{/*withTint=*/false};
+    DepthAndTintMaps depth_{/*withTint=*/false};  // with tint maps where tintBehindAll() (renderMaps)
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_, tiles_, nearestLayer_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
