@@ -425,6 +425,37 @@ TEST_P(Stochastic, AFilterChangedOnALiveRendererRebuildsTheLookup) {
     EXPECT_NE(changed, box);
 }
 
+// tint_behind_all switched on a live renderer remakes the depth maps (with or without tint) and
+// the colour maps drawn against them (their targets held the old depth maps, which kept the box
+// over the pane where it was): the pictures equal a fresh renderer's each way, with the box moved in between.
+TEST_P(Stochastic, TintBehindAllSwitchedOnALiveRendererMatchesAFreshOne) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 10, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
+      "lights": [ { "type": "directional", "direction": [0.2, -1, 0.1], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "box", "size": [1, 0.2, 1], "position": [-1, 4.5, 0] },
+                   { "shape": "plane", "size": [3, 3], "position": [0, 3, 0], "material": { "alpha": 1, "transmission": [0.1, 0.9, 0.1] } } ] })");
+    auto render = [&](render::Renderer& r) {
+        render::OffscreenTarget target(96, 96);
+        r.render(0.0f, s.camera, 96, 96, target.framebuffer());
+        return r.readLinear();
+    };
+    auto fresh = [&](const char* value) {
+        render::RenderOptions options{.technique = GetParam(), .output = OutputMode::Visibility};
+        options.parameters = {{"tint_behind_all", value}};
+        render::Renderer r(s, options);
+        return render(r);
+    };
+    render::Renderer live(s, {.technique = GetParam(), .output = OutputMode::Visibility});
+    EXPECT_EQ(render(live), fresh("true"));
+    shadows::applyParameters(live.technique().parameters(), {{"tint_behind_all", "false"}});
+    s.objects[1].position = {1.0f, 4.5f, 0.5f};
+    EXPECT_EQ(render(live), fresh("false"));
+    shadows::applyParameters(live.technique().parameters(), {{"tint_behind_all", "true"}});
+    s.objects[1].position = {0.0f, 4.5f, -1.0f};
+    EXPECT_EQ(render(live), fresh("true"));
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, Stochastic, ::testing::Values("cssm1", "cssm2"),
                          [](const auto& info) { return std::string(info.param); });
 

@@ -160,7 +160,11 @@ std::uint64_t ColoredStochasticShadowMap::colourKey(std::size_t light, std::size
 }
 
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
-    depth_.setWithTint(tintBehindAll());
+    if (tintBehindAll() != withTint_) {  // the depth maps are made again: the colour maps' targets hold the old ones
+        withTint_ = tintBehindAll();
+        depth_.setWithTint(withTint_);
+        maps_.clear();
+    }
     depth_.render(frame);  // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance)
     gl::DebugGroup group(name().c_str());
     casters_.set("uRandomGenerator", generator_);
