@@ -222,7 +222,8 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
 
 std::vector<std::string> ColoredStochasticShadowMap::lookupDefines() const {
     return {"CSSM_FILTER " + std::to_string(filter_), std::string("CSSM_SEPARATE_OPAQUE ") + (separateOpaque_ ? "1" : "0"),
-            std::string("CSSM_COVERAGE ") + (coverage_ ? "1" : "0")};
+            std::string("CSSM_COVERAGE ") + (coverage_ ? "1" : "0"),
+            std::string("CSSM_TINT_BEHIND_ALL ") + (tintBehindAll() ? "1" : "0")};
 }
 
 void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
@@ -234,7 +235,6 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     lighting.set("uRadiusTexels", radiusTexels_);
     lighting.set("uTileSide", tileSide());
     lighting.set("uNearestLayer", decideByNearestLayer_ ? 1 : 0);
-    lighting.set("uTintBehindAll", tintBehindAll() ? 1 : 0);
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);
     poisson_.upload(lighting);
 }

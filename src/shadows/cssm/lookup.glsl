@@ -21,12 +21,12 @@ const bool kNearestLayer = true;  // the lighting program of translucent surface
 const bool kNearestLayer = false;
 #endif
 uniform int uNearestLayer;  // 1: box lookups may decide by the nearest layer's statistics (nearest_layer.frag)
-// 1: a receiver behind every layer written around it takes the tint map's transmittance product
+// A receiver behind every layer written around it takes the tint map's transmittance product
 // (DepthAndTintMaps, a deterministic per-texel product) instead of the tiles' stratified counts.
 // Same mean, but exact per texel: the edge of a second layer inside a first one's shadow stays
 // as sharp as the plain map's instead of spreading over the 2 x 2 tiles the counts blend
 // (issue 11: glass scene, wrong pixels 1.075 -> 0.822 %, colour error 0.0211 -> 0.0131).
-uniform int uTintBehindAll;
+const bool kTintBehindAll = CSSM_TINT_BEHIND_ALL != 0;  // compiled in: llvmpipe would fetch the tint under a uniform's false too
 
 const vec2 kCross13[13] = vec2[](vec2(0, 0), vec2(3, 3), vec2(-3, 3), vec2(3, -3), vec2(-3, -3), vec2(4, 0),
                                  vec2(-4, 0), vec2(0, 4), vec2(0, -4), vec2(7, 0), vec2(-7, 0), vec2(0, 7), vec2(0, -7));
@@ -188,7 +188,7 @@ TileSite tileSite(ShadowSite s, int side) {
 
 // A receiver behind every layer written in the 2 x 2 tiles around it: the tint map's product, or
 // the tiles' counts blended.
-vec3 behindAll(ShadowSite s, vec3 passing, float covered) { return uTintBehindAll != 0 ? tintAt(s) : passing / covered; }
+vec3 behindAll(ShadowSite s, vec3 passing, float covered) { return kTintBehindAll ? tintAt(s) : passing / covered; }
 
 // Tile q (0-3) of the 2 x 2 around the receiver, and whether its counts are outside the level.
 ivec2 regionTile(TileSite ts, int q, out bool missing) {
