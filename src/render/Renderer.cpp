@@ -115,8 +115,7 @@ std::string Renderer::reloadShaders() {
         overlay_ = std::move(passes.overlay);
         lines_ = std::move(passes.lines);
         oit_.reset();  // rebuilt from the new files on first use
-        depthFirst_ = {};
-        depthFirstAlphaTested_ = {};
+        depthFirst_.reset();
         return "";
     } catch (const std::exception& e) {
         return e.what();
@@ -381,17 +380,9 @@ void Renderer::setReceivers(std::vector<bool> own, bool ownPixelsOnly) {
 // nearest surface.
 void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
     if (ownObjects_.empty() && !options_.depthPrepass) return;
-    if (!depthFirst_.id()) {  // the shadow passes' caster shaders, with the camera as the "light"
-        const gl::ProgramDesc sources{.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"};
-        depthFirst_ = gl::Program::build(sources);
-        gl::ProgramDesc alphaTested = sources;
-        alphaTested.defines = {"ALPHA_TEST 1"};
-        depthFirstAlphaTested_ = gl::Program::build(alphaTested);
-    }
-    const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
-    depthFirst_.set("uLightViewProj", viewProj);
-    depthFirstAlphaTested_.set("uLightViewProj", viewProj);
-    const shadows::DrawPrograms programs(depthFirst_, depthFirstAlphaTested_);
+    if (!depthFirst_) depthFirst_.emplace();
+    depthFirst_->set("uLightViewProj", camera.projection(aspect) * camera.view());
+    const shadows::DrawPrograms programs = *depthFirst_;
     gl::PassState state = gl::PassState::depthOnly();
     state.colorWrite = glm::bvec4(false);
     const gl::ScopedPassState scope(state);

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace penumbra::render {
@@ -143,9 +144,9 @@ private:
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
-    // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster shaders
-    // (an empty fragment stage, and the alpha test for alpha-tested materials), built on first use.
-    gl::Program depthFirst_, depthFirstAlphaTested_;
+    // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster programs,
+    // with the camera as the "light" (built on first use).
+    std::optional<shadows::DepthCasterProgram> depthFirst_;
     std::vector<std::string> lightLayout_;      // the light layout's defines (render/LightingProgram.h)
     std::vector<std::string> lightingDefines_;  // what lighting_ was built with: the layout's and the technique's
     gl::Buffer lineVertices_;

@@ -61,6 +61,24 @@ struct DrawPrograms {
     const gl::Program* alphaTested;
 };
 
+// Opaque casters into depth alone (shadows/common/glsl/depth.frag), as a pair: an empty fragment
+// stage for most materials and the alpha test for alpha-tested ones (see DrawPrograms for why
+// they differ). Uniforms set here reach both. The shadow passes draw casters with it, and the
+// renderer its camera depth pre-pass (render/Renderer.cpp).
+class DepthCasterProgram {
+public:
+    DepthCasterProgram();
+    template <class T>
+    void set(const char* name, const T& value) const {
+        plain_.set(name, value);
+        alphaTested_.set(name, value);
+    }
+    operator DrawPrograms() const { return {plain_, alphaTested_}; }  // NOLINT: implicit by design
+
+private:
+    gl::Program plain_, alphaTested_;
+};
+
 // What the renderer gives a technique for one frame.
 struct ShadowFrame {
     const std::vector<scene::Light>* lights = nullptr;

@@ -5,7 +5,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "shadows/common/DepthCasterProgram.h"
+#include "shadows/ShadowTechnique.h"
 #include "shadows/ShadowTechnique.h"
 
 #include <optional>

@@ -18,7 +18,7 @@
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
-#include "shadows/common/DepthCasterProgram.h"
+#include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 
 #include <vector>
@@ -60,6 +60,7 @@ public:
     explicit DepthAndTintMaps(bool withTint = true);
     // Turns the tint maps on or off; the maps are made again on the next render.
     void setWithTint(bool withTint);
+    bool withTint() const { return withTint_; }
     // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
     // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
     // translucent casters need it as the depth test of the tint pass, and then only under them

@@ -1,4 +1,4 @@
-#include "shadows/common/DepthCasterProgram.h"
+#include "shadows/ShadowTechnique.h"
 
 namespace penumbra::shadows {
 

@@ -10,7 +10,7 @@
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
-#include "shadows/common/DepthCasterProgram.h"
+#include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 #include "shadows/ShadowTechnique.h"
 

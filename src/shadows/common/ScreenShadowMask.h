@@ -9,7 +9,7 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
-#include "shadows/common/DepthCasterProgram.h"
+#include "shadows/ShadowTechnique.h"
 
 namespace penumbra::shadows {
 

@@ -160,9 +160,8 @@ std::uint64_t ColoredStochasticShadowMap::colourKey(std::size_t light, std::size
 }
 
 void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
-    if (tintBehindAll() != withTint_) {  // the depth maps are made again: the colour maps' targets hold the old ones
-        withTint_ = tintBehindAll();
-        depth_.setWithTint(withTint_);
+    if (depth_.withTint() != tintBehindAll()) {  // the depth maps are made again: the colour maps' targets hold the old ones
+        depth_.setWithTint(tintBehindAll());
         maps_.clear();
     }
     depth_.render(frame);  // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance)

@@ -83,7 +83,6 @@ private:
     bool fp16_, separateOpaque_ = true, coverage_ = true, decideByNearestLayer_ = true, tintBehindAll_ = true;
     PoissonDisk poisson_;
     DepthAndTintMaps depth_{/*withTint=*/false};  // with tint maps where tintBehindAll() (renderMaps)
-    bool withTint_ = false;                       // what depth_ was last set to
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_, tiles_, nearestLayer_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
