@@ -47,6 +47,12 @@ void DepthAndTintMaps::setWithTint(bool withTint) {
     maps_.clear();
 }
 
+void DepthAndTintMaps::setTintAlpha(TintAlpha alpha) {
+    if (alpha == tintAlpha_) return;
+    tintAlpha_ = alpha;
+    maps_.clear();
+}
+
 void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     if (maps_.size() <= i) maps_.resize(i + 1);
     LightMaps& m = maps_[i];
@@ -62,7 +68,8 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
         glClearTexImage(m.tint.id(), 0, GL_RGBA, GL_FLOAT, white);
     }
     m.depth.setDepthCompare(true);
-    for (gl::Texture* t : {&m.depth, &m.tint}) t->setFilter(filter_, filter_);
+    m.depth.setFilter(filter_, filter_);
+    m.tint.setFilter(tintFilter(), tintFilter());
     m.depthFaces = depthOnlyFaces(m.depth, cube, "shadow depth map " + std::to_string(res));
     for (int f = 0; f < (cube ? 6 : 1); ++f) {
         gl::Framebuffer withTint;
@@ -83,6 +90,38 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.translucentKeys.assign(faces, 0);
     m.stillKeys.assign(faces, 0);
     m.movingTexels.assign(faces, TexelRect(0));
+    if (!withTint_ || tintAlpha_ != TintAlpha::FarthestAround) return;
+    if (!farthestAround_.id()) {
+        farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
+                                              .fragment = "src/shadows/common/glsl/farthest_around.frag"});
+        alphaFromAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
+                                               .fragment = "src/shadows/common/glsl/alpha_from_around.frag"});
+    }
+    for (int f = 0; f < (cube ? 6 : 1); ++f) m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
+    m.around = gl::Texture::create2D(GL_R16F, res, res);
+    m.aroundTarget = gl::Framebuffer::colourOnly(m.around, -1, "tint bound " + std::to_string(res));
+}
+
+void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& rect) {
+    const ScopedScissor scissor(rect);
+    fullscreenVao_.bind();
+    {  // 1. around = the least alpha over each 3 x 3 neighbourhood (the tint map's face as input)
+        const gl::ScopedPassState state(gl::PassState::fullscreen());
+        m.aroundTarget.bind();
+        farthestAround_.use();
+        farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
+        m.tintFaceViews[face].bind(0);
+        rawSampler_.bind(0);  // nearest, clamped to the edge
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        gl::Sampler::unbind(0);
+    }
+    // 2. into the tint's alpha, its rgb kept: MIN with the texel's own alpha, which is never below it.
+    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_ONE, GL_ONE, GL_ONE}));
+    m.tintFaces[face].bind();
+    alphaFromAround_.use();
+    m.around.bind(0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl::unbindTextureUnits(1);
 }
 
 void DepthAndTintMaps::ensureStill(LightMaps& m) {
@@ -126,8 +165,10 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
 void DepthAndTintMaps::setFiltering(GLenum filter) {
     filter_ = filter;
     for (auto& m : maps_)
-        for (gl::Texture* t : {&m.depth, &m.tint})
-            if (t->id()) t->setFilter(filter, filter);
+        if (m.depth.id()) {
+            m.depth.setFilter(filter, filter);
+            m.tint.setFilter(tintFilter(), tintFilter());
+        }
 }
 
 void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
@@ -166,6 +207,9 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const CasterSelection translucent{Casters::Translucent, vp, light};
             const TexelRect translucentTexels = texelRect(frame.casterBounds(translucent), vp, ls.resolution);
             const TexelRect tinted = withTint_ ? translucentTexels : TexelRect(0);
+            // FarthestAround bounds reach one texel past the layers'.
+            const bool around = tintAlpha_ == TintAlpha::FarthestAround;
+            const TexelRect tintWritten = around ? grown(tinted, glm::ivec2(1), ls.resolution) : tinted;
             const bool anyTranslucent = !isEmpty(tinted);
             // A light whose depth lives elsewhere needs this depth only as the tint pass's depth
             // test, under the translucent casters: the opaque casters are culled to those texels
@@ -194,7 +238,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             if (!tintCurrent) {
                 // White where the last translucent casters were (nothing without a tint map).
                 clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
-                m.tintDirty[face] = tinted;
+                m.tintDirty[face] = tintWritten;
                 m.tintHolds[face] = 0;
             }
             if (light == depthElsewhere && (!anyTranslucent || tintCurrent)) continue;
@@ -208,7 +252,9 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             m.tintFaces[face].bind();
             const gl::ScopedPassState state(tintPass);
             tintProgram_.set("uLightViewProj", vp);
+            tintProgram_.set("uFarthest", around ? 1 : 0);
             frame.drawCasters(tintProgram_, translucent);
+            if (around) boundFarthestAround(m, face, tintWritten);
         }
     }
 }
@@ -230,7 +276,7 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
 
 std::size_t DepthAndTintMaps::memoryBytes() const {
     std::size_t total = 0;
-    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
+    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes() + m.around.memoryBytes();
     return total;
 }
 

@@ -17,7 +17,7 @@
 #include "gl/Program.h"
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
-#include "shadows/ShadowTechnique.h"
+#include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 
@@ -31,7 +31,7 @@ public:
         int resolution = 0;
         bool cube = false;
         gl::Texture depth;  // DEPTH_COMPONENT32F, hardware compare enabled
-        gl::Texture tint;   // RGBA16F: rgb transmittance, a nearest translucent depth
+        gl::Texture tint;   // RGBA16F: rgb transmittance, a as TintAlpha says
         // Per face (6 for cubes): depth only for the opaque pass (llvmpipe then never touches
         // the colour tiles), depth + colour for the translucent pass.
         std::vector<gl::Framebuffer> depthFaces, tintFaces;
@@ -54,6 +54,24 @@ public:
         std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
+        // TintAlpha::FarthestAround: per face, the tint map's face as a 2D texture, and a
+        // scratch R16F map (one for all faces) holding the bound before it goes into alpha.
+        std::vector<gl::Texture> tintFaceViews;
+        gl::Texture around;
+        gl::Framebuffer aroundTarget;
+    };
+
+    // What the alpha of a tint texel holds.
+    enum class TintAlpha {
+        // The nearest translucent layer's window depth: a receiver beyond it is tinted (the hard
+        // lookups' tintBehind).
+        NearestLayer,
+        // 1 - the farthest layer's window depth over the texel and its 8 neighbours (1: no layer).
+        // A bilinear fetch anywhere in a texel's footprint is then at most the least of the 2 x 2
+        // texels it blends, so one fetch tells whether a receiver lies behind every layer of
+        // them: alpha > 1 - its depth (CSSM's opaque receivers, which then need no per-texel
+        // test). Sampled bilinearly: rgb then blends the 2 x 2 products, white where no layer is.
+        FarthestAround,
     };
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
@@ -61,6 +79,8 @@ public:
     // Turns the tint maps on or off; the maps are made again on the next render.
     void setWithTint(bool withTint);
     bool withTint() const { return withTint_; }
+    // Remakes the maps when it changes, as setWithTint does.
+    void setTintAlpha(TintAlpha alpha);
     // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
     // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
     // translucent casters need it as the depth test of the tint pass, and then only under them
@@ -93,13 +113,20 @@ private:
     // drawing as little as the digests allow; `stillKey` is their digest (0: do not reuse).
     void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region,
                       std::uint64_t stillKey, bool moving);
+    // TintAlpha::FarthestAround: the drawn alpha (1 - the farthest depth, MIN-blended) becomes
+    // its least over each texel's 3 x 3 neighbourhood, in `rect` (the tinted texels grown by one).
+    void boundFarthestAround(LightMaps& maps, std::size_t face, const TexelRect& rect);
+    GLenum tintFilter() const { return tintAlpha_ == TintAlpha::FarthestAround ? GL_LINEAR : filter_; }
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
     gl::Program tintProgram_;
+    gl::Program farthestAround_, alphaFromAround_;  // built with the first FarthestAround map
+    gl::VertexArray fullscreenVao_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;
+    TintAlpha tintAlpha_ = TintAlpha::NearestLayer;
     int depthElsewhere_ = -1;  // of the last render
 };
 

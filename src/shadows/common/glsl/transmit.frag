@@ -2,11 +2,13 @@
 // Translucent casters as seen from the light (the per-light colour buffer of Nápravník 2020):
 // rgb = fraction of light passing, multiplied over every layer by blending (dst * src);
 // a = depth of the nearest translucent layer (MIN blending), so receivers in front of it
-// stay untinted.
+// stay untinted; or, with uFarthest (DepthAndTintMaps::TintAlpha::FarthestAround), 1 - depth,
+// which MIN makes 1 - the farthest layer's depth.
 #include "shaders/common/material.glsl"
 in vec2 vUv;
 layout(location = 0) out vec4 outTransmit;
+uniform int uFarthest;
 void main() {
     float coverage = materialCoverage(materialTexel(vUv));
-    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), gl_FragCoord.z);
+    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), uFarthest != 0 ? 1.0 - gl_FragCoord.z : gl_FragCoord.z);
 }
