@@ -37,6 +37,9 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
     const shadows::LightSpace space = shadows::computeLightSpace(light, resolution_, scene_.boundsAt(time), camera, aspect);
     const std::vector<render::Draw> draws = gpu_.draws(time, camera.position);
 
+    // No program current before the clears below: one deleted by a renderer case run before this
+    // one would stay current, and NVIDIA validates it on a clear (a debug-output warning there).
+    glUseProgram(0);
     timer_.beginFrame(frame_++);
     timer_.begin(render::Pass::Shadow);
     triangles_ = 0;
@@ -72,7 +75,7 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
         for (const render::Draw& d : draws)
             if (d.visible && !d.translucent) gpu_.draw(d, lambertProgram_);
         gl::Sampler::unbind(gpu::kUnitShadow2D);
-        glUseProgram(0);  // a deleted program stays current until replaced (NVIDIA validates it on the next clear)
+        glUseProgram(0);  // likewise for whatever clears next
     }
     timer_.end(render::Pass::Opaque);
     timer_.endFrame();
