@@ -187,7 +187,7 @@ TEST_P(Stochastic, ReceiverBetweenPanesGetsOnlyThePanesInFrontOfIt) {
 // its alpha bounds the farthest layer over each texel's neighbours (DepthAndTintMaps::TintAlpha::
 // FarthestAround), so a receiver whose bilinear footprint reaches one texel of the rear pane is
 // counted instead. With the texel's own farthest depth alone, footprints straddling the rear
-// pane's edge blend its product in, up to (1 - 0.5) x 0.5 too dark there: 71 pixels off.
+// pane's edges blend its product in, up to (1 - 0.5) x 0.5 too dark there.
 TEST_P(Stochastic, ReceiverBetweenPanesIsExactUpToTheEdgeOfAPaneBehindIt) {
     const std::string json = R"({
       "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 40 },
@@ -195,7 +195,7 @@ TEST_P(Stochastic, ReceiverBetweenPanesIsExactUpToTheEdgeOfAPaneBehindIt) {
       "objects": [ { "shape": "plane", "size": [20, 20] },
                    { "shape": "plane", "size": [6, 6], "position": [0, 3, 0], "material": { "alpha": 1, "transmission": 0.5 } },
                    { "shape": "plane", "size": [3, 3], "position": [0, 2, 0], "cast_shadows": false },
-                   { "shape": "plane", "size": [2, 4], "position": [1.2, 1, 0], "material": { "alpha": 1, "transmission": 0.5 } } ] })";
+                   { "shape": "plane", "size": [2, 2], "position": [1.2, 1, 1.2], "material": { "alpha": 1, "transmission": 0.5 } } ] })";
     scene::Scene s = sceneFromJson(json);
     const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, GetParam());
     int wrong = 0, checked = 0, nearRearEdge = 0;
@@ -205,11 +205,12 @@ TEST_P(Stochastic, ReceiverBetweenPanesIsExactUpToTheEdgeOfAPaneBehindIt) {
             const glm::vec3 p = r.origin + r.direction * ((2.0f - r.origin.y) / r.direction.y);  // on the receiver
             if (std::max(std::abs(p.x), std::abs(p.z)) > 1.35f) continue;  // off the receiver, or at its rim
             // Each pane is two triangles with independent strata (caster.frag): tiles across the
-            // seam count a few strata off wherever the counts decide. Not this test's subject.
-            const float frontSeam = std::abs(p.x - p.z) / std::sqrt(2.0f), rearSeam = std::abs(2.0f * (p.x - 1.2f) - p.z) / std::sqrt(5.0f);
-            if (std::min(frontSeam, rearSeam) < 0.2f) continue;
+            // seam (the diagonal x = z, of both panes) count a few strata off wherever the counts
+            // decide. Not this test's subject.
+            if (std::abs(p.x - p.z) / std::sqrt(2.0f) < 0.2f) continue;
             ++checked;
-            nearRearEdge += std::abs(p.x - 0.2f) < 0.1f;  // under the rear pane's edge (x = 0.2 at y = 1)
+            // Under the rear pane's two edges inside the receiver (x = 0.2 and z = 0.2 at y = 1).
+            nearRearEdge += (std::abs(p.x - 0.2f) < 0.1f && p.z > 0.2f) || (std::abs(p.z - 0.2f) < 0.1f && p.x > 0.2f);
             wrong += glm::any(glm::greaterThan(glm::abs(f.at(x, y) - glm::vec3(0.5f)), glm::vec3(3.0f / 255.0f)));
         }
     std::printf("%s: receiver between panes: %d of %d pixels off by more than 3/255 (%d within 0.1 m of the rear pane's edge)\n",
