@@ -36,7 +36,7 @@ std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, c
 
 }  // namespace
 
-DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
+DepthAndTintMaps::DepthAndTintMaps(bool withTint, TintAlpha tintAlpha) : withTint_(withTint), tintAlpha_(tintAlpha) {
     tintProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
                                        .fragment = "src/shadows/common/glsl/transmit.frag"});
 }
@@ -44,12 +44,6 @@ DepthAndTintMaps::DepthAndTintMaps(bool withTint) : withTint_(withTint) {
 void DepthAndTintMaps::setWithTint(bool withTint) {
     if (withTint == withTint_) return;
     withTint_ = withTint;
-    maps_.clear();
-}
-
-void DepthAndTintMaps::setTintAlpha(TintAlpha alpha) {
-    if (alpha == tintAlpha_) return;
-    tintAlpha_ = alpha;
     maps_.clear();
 }
 

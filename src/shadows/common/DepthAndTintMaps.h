@@ -75,12 +75,10 @@ public:
     };
 
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
-    explicit DepthAndTintMaps(bool withTint = true);
+    explicit DepthAndTintMaps(bool withTint = true, TintAlpha tintAlpha = TintAlpha::NearestLayer);
     // Turns the tint maps on or off; the maps are made again on the next render.
     void setWithTint(bool withTint);
     bool withTint() const { return withTint_; }
-    // Remakes the maps when it changes, as setWithTint does.
-    void setTintAlpha(TintAlpha alpha);
     // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
     // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
     // translucent casters need it as the depth test of the tint pass, and then only under them
@@ -126,7 +124,7 @@ private:
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;
-    TintAlpha tintAlpha_ = TintAlpha::NearestLayer;
+    TintAlpha tintAlpha_;
     int depthElsewhere_ = -1;  // of the last render
 };
 

@@ -22,9 +22,6 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
     casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/cssm/caster.frag"});
     tiles_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/tiles.frag"});
     nearestLayer_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/cssm/nearest_layer.frag"});
-    // tint_behind_all: the lookup asks the tint map whether an opaque receiver is behind every
-    // layer around it (lookup.glsl, colouredByTint).
-    depth_.setTintAlpha(DepthAndTintMaps::TintAlpha::FarthestAround);
 }
 
 std::vector<Parameter> ColoredStochasticShadowMap::declareParameters() {

@@ -82,7 +82,9 @@ private:
     float radiusTexels_ = 0.0f;
     bool fp16_, separateOpaque_ = true, coverage_ = true, decideByNearestLayer_ = true, tintBehindAll_ = true;
     PoissonDisk poisson_;
-    DepthAndTintMaps depth_{/*withTint=*/false};  // with tint maps where tintBehindAll() (renderMaps)
+    // With tint maps where tintBehindAll() (renderMaps), whose alpha tells the lookup whether an
+    // opaque receiver is behind every layer around it (lookup.glsl, colouredByTint).
+    DepthAndTintMaps depth_{/*withTint=*/false, DepthAndTintMaps::TintAlpha::FarthestAround};
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_, tiles_, nearestLayer_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
