@@ -126,6 +126,39 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
         expectSame(t, "the sphere crossing over the pane");
 }
 
+// Animated translucent casters: the tint and CSSM's coloured map keep what the still casters drew
+// and are drawn again only where a glass ball flies, or an opaque one crosses the panes'
+// texels (the panes are depth-tested against it), as it is now and as it was last frame
+// (DepthAndTintMaps::translucentRedo).
+TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapWithAnimatedGlass) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 7, 6], "target": [0, 0, 0], "fov_deg": 50 },
+      "lights": [ { "type": "point", "position": [0, 3, 0], "range": 30, "intensity": 0.6, "shadow": { "resolution": 128 } },
+                  { "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.6, "shadow": { "resolution": 256 } } ],
+      "objects": [ { "shape": "plane", "size": [12, 12] },
+                   { "name": "pole", "shape": "box", "size": [0.2, 4, 0.2], "position": [-5, 2, -5] },
+                   { "name": "green pane", "shape": "plane", "size": [2, 2], "position": [1.5, 1.2, 0],
+                     "material": { "transmission": [0.1, 0.9, 0.1] } },
+                   { "name": "blue pane", "shape": "plane", "size": [1, 1], "position": [-1.5, 1.5, 0.5],
+                     "material": { "transmission": [0.2, 0.2, 0.9] } },
+                   { "name": "glass ball", "shape": "sphere", "radius": 0.4, "material": { "transmission": [0.9, 0.3, 0.3] },
+                     "animation": [[0, -3, 2, 0.2], [1, 3, 2, 0.2], [2, -3, 2, 0.2]] },
+                   { "name": "stone", "shape": "sphere", "radius": 0.3,
+                     "animation": [[0, 3, 1.6, -0.2], [1, -3, 1.6, -0.2], [2, 3, 1.6, -0.2]] } ] })");
+    Pair pair(s, GetParam());
+    auto expectSame = [&](float time, const std::string& what) {
+        const auto [reused, redrawn] = pair.render(s, time);
+        ASSERT_EQ(reused.size(), redrawn.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < reused.size(); ++i) differing += reused[i] != redrawn[i];
+        EXPECT_EQ(differing, 0u) << GetParam() << ", " << what << " (t = " << time << ")";
+        expectSameMaps(pair.reusing, pair.redrawing, std::string(GetParam()) + ", " + what + ", t = " + std::to_string(time));
+    };
+    for (float t : {0.0f, 0.1f, 0.1f, 0.2f, 0.35f, 0.5f, 0.6f, 0.6f, 0.75f, 0.9f, 1.2f}) expectSame(t, "glass ball and stone flying");
+    s.objects[4].animation = {};  // the glass ball stops: only the stone moves, over the panes and away
+    for (float t : {1.3f, 1.4f, 1.4f, 1.6f, 1.8f}) expectSame(t, "the stone alone");
+}
+
 // cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept. A wide
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16",

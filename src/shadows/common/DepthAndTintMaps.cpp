@@ -82,39 +82,46 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.stillHolds.assign(faces, 0);
     m.tintHolds.assign(faces, 0);
     m.translucentKeys.assign(faces, 0);
+    m.translucentRedo.assign(faces, TexelRect(0));
+    m.translucentMoving.assign(faces, TexelRect(0));
     m.stillKeys.assign(faces, 0);
     m.movingTexels.assign(faces, TexelRect(0));
     if (!withTint_ || tintAlpha_ != TintAlpha::FarthestAround) return;
     if (!farthestAround_.id()) {
+        drawnAlpha_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
+                                          .fragment = "src/shadows/common/glsl/drawn_alpha.frag"});
         farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                               .fragment = "src/shadows/common/glsl/farthest_around.frag"});
-        alphaFromAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
-                                               .fragment = "src/shadows/common/glsl/alpha_from_around.frag"});
     }
-    for (int f = 0; f < (cube ? 6 : 1); ++f) m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
-    m.around = gl::Texture::create2D(GL_R16F, res, res);
-    m.aroundTarget = gl::Framebuffer::colourOnly(m.around, -1, "tint bound " + std::to_string(res));
+    const float noLayer = 1.0f;  // 1 - the farthest depth where no layer is
+    for (int f = 0; f < (cube ? 6 : 1); ++f) {
+        m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
+        m.drawnAlpha.push_back(gl::Texture::create2D(GL_R16F, res, res));
+        glClearTexImage(m.drawnAlpha.back().id(), 0, GL_RED, GL_FLOAT, &noLayer);
+        m.drawnAlphaTargets.push_back(gl::Framebuffer::colourOnly(m.drawnAlpha.back(), -1, "tint's drawn alpha " + std::to_string(res)));
+    }
 }
 
-void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& rect) {
-    const ScopedScissor scissor(rect);
+void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& drawn) {
     fullscreenVao_.bind();
-    {  // 1. around = the least alpha over each 3 x 3 neighbourhood (the tint map's face as input)
+    {  // 1. the drawn alpha, kept (the tint map's face as input)
+        const ScopedScissor scissor(drawn);
         const gl::ScopedPassState state(gl::PassState::fullscreen());
-        m.aroundTarget.bind();
-        farthestAround_.use();
-        farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
+        m.drawnAlphaTargets[face].bind();
+        drawnAlpha_.use();
         m.tintFaceViews[face].bind(0);
-        rawSampler_.bind(0);  // nearest, clamped to the edge
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        gl::Sampler::unbind(0);
     }
-    // 2. into the tint's alpha, its rgb kept: MIN with the texel's own alpha, which is never below it.
-    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_ONE, GL_ONE, GL_ONE}));
+    // 2. the least drawn alpha over each 3 x 3 neighbourhood into the tint's alpha, rgb kept.
+    const ScopedScissor scissor(grown(drawn, glm::ivec2(1), m.resolution));
+    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend({GL_FUNC_ADD, GL_FUNC_ADD, GL_ZERO, GL_ONE, GL_ONE, GL_ZERO}));
     m.tintFaces[face].bind();
-    alphaFromAround_.use();
-    m.around.bind(0);
+    farthestAround_.use();
+    farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
+    m.drawnAlpha[face].bind(0);
+    rawSampler_.bind(0);  // nearest, clamped to the edge
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl::Sampler::unbind(0);
     gl::unbindTextureUnits(1);
 }
 
@@ -222,33 +229,40 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             // it only where their texels are. An animated caster outside them leaves that depth the
             // still casters'; one over them changes it (and its key 0 then never matches, so the
             // frame after it has left redraws too).
-            const bool movingOverTranslucent = !isEmpty(intersection(movingTexels, translucentTexels));
+            // Animated translucent casters, and animated opaque ones over the translucent casters'
+            // texels, change what the translucent casters draw there only.
+            const TexelRect movingTranslucent =
+                reuse ? texelRect(frame.casterBounds({Casters::Translucent, vp, light, Motion::Moving}), vp, ls.resolution) : TexelRect(0);
+            const TexelRect changed = unite(movingTranslucent, intersection(movingTexels, translucentTexels));
             const std::uint64_t tintKey =
-                reuse && !movingOverTranslucent ? util::Digest().add(stillKey, frame.casterDigest(translucent)).value() : 0;
+                reuse ? util::Digest().add(stillKey, frame.casterDigest({Casters::Translucent, vp, light, Motion::Still})).value() : 0;
+            const bool kept = tintKey != 0 && tintKey == m.translucentKeys[face];
+            m.translucentRedo[face] = kept ? unite(m.translucentMoving[face], changed) : TexelRect(0, 0, ls.resolution, ls.resolution);
+            m.translucentMoving[face] = changed;
             m.translucentKeys[face] = tintKey;
             m.stillKeys[face] = stillKey;
             m.movingTexels[face] = movingTexels;
-            const bool tintCurrent = tintKey != 0 && tintKey == m.tintHolds[face];
-            if (!tintCurrent) {
-                // White where the last translucent casters were (nothing without a tint map).
-                clearColourIn(m.tintFaces[face].id(), m.tintDirty[face], white);
-                m.tintDirty[face] = tintWritten;
-                m.tintHolds[face] = 0;
-            }
-            if (light == depthElsewhere && (!anyTranslucent || tintCurrent)) continue;
-            {
+            // The tint texels to draw again (nothing without a tint map): where the last translucent
+            // casters may have left something, and where this frame's are, or only what changed.
+            const bool tintKept = kept && tintKey == m.tintHolds[face];
+            const TexelRect redraw = !withTint_ ? TexelRect(0) : tintKept ? m.translucentRedo[face] : unite(m.tintDirty[face], tintWritten);
+            m.tintHolds[face] = tintKey;
+            if (light != depthElsewhere || (anyTranslucent && !isEmpty(redraw))) {
                 const gl::ScopedPassState state(opaquePass);
                 renderOpaque(frame, m, face, light, region, stillKey, moving);
             }
-            if (tintCurrent) continue;
-            m.tintHolds[face] = tintKey;
-            if (!anyTranslucent) continue;
-            m.tintFaces[face].bind();
-            const gl::ScopedPassState state(tintPass);
-            tintProgram_.set("uLightViewProj", vp);
-            tintProgram_.set("uFarthest", around ? 1 : 0);
-            frame.drawCasters(tintProgram_, translucent);
-            if (around) boundFarthestAround(m, face, tintWritten);
+            if (isEmpty(redraw)) continue;
+            clearColourIn(m.tintFaces[face].id(), redraw, white);
+            m.tintDirty[face] = tintKept ? unite(m.tintDirty[face], tintWritten) : tintWritten;
+            if (anyTranslucent) {
+                const ScopedScissor scissor(redraw);
+                m.tintFaces[face].bind();
+                const gl::ScopedPassState state(tintPass);
+                tintProgram_.set("uLightViewProj", vp);
+                tintProgram_.set("uFarthest", around ? 1 : 0);
+                frame.drawCasters(tintProgram_, translucent);
+            }
+            if (around) boundFarthestAround(m, face, redraw);
         }
     }
 }
@@ -270,7 +284,9 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
 
 std::size_t DepthAndTintMaps::memoryBytes() const {
     std::size_t total = 0;
-    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes() + m.around.memoryBytes();
+    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
+    for (const auto& m : maps_)
+        for (const auto& a : m.drawnAlpha) total += a.memoryBytes();
     return total;
 }
 

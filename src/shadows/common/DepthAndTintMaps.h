@@ -44,9 +44,14 @@ public:
         // the tint.
         std::vector<std::uint64_t> depthHolds, stillHolds, tintHolds;
         // Per face, this frame's digest of what a pass of translucent casters depth-tested against
-        // this map would draw: the translucent casters, the still opaque depth and the light
-        // (0: unknown, or an animated caster's texels overlap the translucent casters').
+        // this map draws outside `translucentRedo`: the still translucent casters, the still opaque
+        // depth and the light (0: unknown). A map drawn from that pass (the tint, CSSM's colour
+        // map) that was drawn with the same key last frame needs drawing again only in
+        // `translucentRedo`: the texels where animated casters, translucent or opaque over the
+        // translucent ones, were last frame or are now. With another key, everything is redone.
         std::vector<std::uint64_t> translucentKeys;
+        std::vector<TexelRect> translucentRedo;
+        std::vector<TexelRect> translucentMoving;  // this frame's part of translucentRedo, for the next
         // Per face, this frame: the digest of the still opaque casters (0: maps are not kept) and
         // the texels the animated ones can cover, so that passes over the depth (moments) redo
         // only what changed.
@@ -54,11 +59,12 @@ public:
         std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
-        // TintAlpha::FarthestAround: per face, the tint map's face as a 2D texture, and a
-        // scratch R16F map (one for all faces) holding the bound before it goes into alpha.
+        // TintAlpha::FarthestAround: per face, the tint map's face as a 2D texture, and the drawn
+        // alpha before the bound (R16F), which the bound of any texel's neighbours is made from
+        // again when part of the tint is redrawn.
         std::vector<gl::Texture> tintFaceViews;
-        gl::Texture around;
-        gl::Framebuffer aroundTarget;
+        std::vector<gl::Texture> drawnAlpha;
+        std::vector<gl::Framebuffer> drawnAlphaTargets;
     };
 
     // What the alpha of a tint texel holds.
@@ -111,15 +117,16 @@ private:
     // drawing as little as the digests allow; `stillKey` is their digest (0: do not reuse).
     void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region,
                       std::uint64_t stillKey, bool moving);
-    // TintAlpha::FarthestAround: the drawn alpha (1 - the farthest depth, MIN-blended) becomes
-    // its least over each texel's 3 x 3 neighbourhood, in `rect` (the tinted texels grown by one).
-    void boundFarthestAround(LightMaps& maps, std::size_t face, const TexelRect& rect);
+    // TintAlpha::FarthestAround, after the tint pass redrew `drawn`: the drawn alpha (1 - the
+    // farthest depth, MIN-blended) is kept in drawnAlpha there, and the tint's alpha becomes its
+    // least over each texel's 3 x 3 neighbourhood wherever that reaches `drawn` (grown by one).
+    void boundFarthestAround(LightMaps& maps, std::size_t face, const TexelRect& drawn);
     GLenum tintFilter() const { return tintAlpha_ == TintAlpha::FarthestAround ? GL_LINEAR : filter_; }
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
     gl::Program tintProgram_;
-    gl::Program farthestAround_, alphaFromAround_;  // built with the first FarthestAround map
+    gl::Program drawnAlpha_, farthestAround_;  // built with the first FarthestAround map
     gl::VertexArray fullscreenVao_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;

@@ -116,12 +116,15 @@ bool ColoredStochasticShadowMap::usesTiles() const {
 
 int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmBox64 ? 8 : 4; }
 
-// Tile statistics of face `face` (tiles.frag) over the tiles that `rect` (texels) touches; every
-// other tile holds zeros, i.e. no translucent layer.
-void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect) {
+// Tile statistics of face `face` (tiles.frag) over the tiles that `rect` (texels) touches. With
+// `whole`, every other tile is cleared to zeros, what tiles.frag and nearest_layer.frag make of a
+// tile no translucent layer covers; without, the other tiles are kept.
+void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole) {
     const float zero[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
-    if (!m.cube) glClearNamedFramebufferfv(m.nearestLayerTargets[face].id(), GL_COLOR, 0, zero);  // no covered texels
+    if (whole) {
+        glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);
+        if (!m.cube) glClearNamedFramebufferfv(m.nearestLayerTargets[face].id(), GL_COLOR, 0, zero);  // no covered texels
+    }
     if (isEmpty(rect)) return;
     const glm::ivec2 first = glm::ivec2(rect.x, rect.y) / m.tileSide;
     const glm::ivec2 last = (glm::ivec2(rect.z, rect.w) + m.tileSide - 1) / m.tileSide;
@@ -188,15 +191,26 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             p->set("uFar", ls.far);
         }
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
+            // Drawn with the same key last frame: the colour map and its tiles are as drawn except
+            // where animated casters were or are (DepthAndTintMaps::translucentRedo).
             const std::uint64_t key = colourKey(i, f);
-            if (key != 0 && key == m.holds[f]) continue;  // the colour map and its tiles are as drawn
+            const bool kept = key != 0 && key == m.holds[f];
             m.holds[f] = key;
+            const TexelRect redo = kept ? depth_.maps(i).translucentRedo[f] : TexelRect(0);
+            if (kept && isEmpty(redo)) continue;
             const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i)};
             const scene::Bounds casters = frame.casterBounds(translucent);
             glViewport(0, 0, m.resolution, m.resolution);
             m.targets[f].bind();
             const TexelRect rect = texelRect(casters, ls.viewProj[f], m.resolution);
-            if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
+            if (kept) {  // the same casters drawn again there (the same draws: ξ hashes gl_PrimitiveID)
+                clearColourIn(m.targets[f].id(), redo, glm::vec4(1.0f));
+                m.dirty[f] = unite(m.dirty[f], rect);
+                const ScopedScissor scissor(redo);
+                casters_.set("uLightViewProj", ls.viewProj[f]);
+                const gl::ScopedPassState state(casterPass);
+                frame.drawCasters(casters_, translucent);
+            } else if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
                 clearColourIn(m.targets[f].id(), m.dirty[f], glm::vec4(1.0f));  // white where it may hold anything
                 m.dirty[f] = rect;
             } else {  // 1 (white) where nothing opaque is
@@ -209,12 +223,12 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
                 glDrawArrays(GL_TRIANGLES, 0, 3);
                 gl::Sampler::unbind(0);
             }
-            if (!casters.empty()) {
+            if (!kept && !casters.empty()) {
                 casters_.set("uLightViewProj", ls.viewProj[f]);
                 const gl::ScopedPassState state(casterPass);
                 frame.drawCasters(casters_, translucent);
             }
-            if (m.tileSide > 0) renderTiles(m, f, rect);
+            if (m.tileSide > 0) renderTiles(m, f, kept ? redo : rect, !kept);
         }
     }
 }

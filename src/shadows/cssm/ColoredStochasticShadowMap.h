@@ -73,7 +73,7 @@ private:
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
     bool tintBehindAll() const { return usesTiles() && tintBehindAll_; }  // the lookup reads the tint maps
     int tileSide() const;
-    void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect);
+    void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole);
     // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).
     std::uint64_t colourKey(std::size_t light, std::size_t face) const;
 

@@ -19,7 +19,9 @@
 //   (tx, N + ty), written here: the same for the gaps w - alpha of the writes behind the nearest
 //       layer (every written channel a sample): where the layer behind is a face at an angle to
 //       the nearest one (a block's far face), the gap is not constant but planar.
-//   A plane that cannot be fitted (fewer than three samples, or collinear) is (0, 0, 0, 2).
+//   A plane that cannot be fitted (fewer than three samples, or collinear) is (0, 0, 0, 2); a
+//   tile that no layer covers is all zeros, as renderTiles clears tiles outside the layers'
+//   texels, so that a tile redrawn alone reads as it would after a whole redraw.
 // The lookup (lookup.glsl, colouredByTiles) bounds the receiver's gap over its tile from its own
 // plane and alpha's, and takes `passing` when that bound lies behind the nearest layer and in
 // front of every other write: below the least gap, or below the gaps' plane.
@@ -54,12 +56,14 @@ void main() {
     ivec2 first = (gaps ? at - ivec2(0, tiles) : at - ivec2(tiles, 0)) * uSide;
     float half_ = 0.5 * float(uSide);
     PlaneFit fit = PlaneFit(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    bool covered = false;
     for (int j = 0; j < uSide; ++j)
         for (int i = 0; i < uSide; ++i) {
             ivec2 p = first + ivec2(i, j);
             if (any(greaterThanEqual(p, size))) continue;
             vec4 texel = texelFetch(uMap, p, 0);
             if (texel.a >= 1.0) continue;  // no translucent layer at this texel
+            covered = true;
             vec3 behind = writtenBehind(texel);
             vec3 gap = texel.rgb - texel.a;
             vec2 d = vec2(i, j) + 0.5 - half_;
@@ -72,7 +76,7 @@ void main() {
             }
         }
     vec3 plane;
-    if (!solve(fit, plane)) { outStats = vec4(0.0, 0.0, 0.0, 2.0); return; }  // never decides by this plane
+    if (!solve(fit, plane)) { outStats = vec4(0.0, 0.0, 0.0, covered ? 2.0 : 0.0); return; }  // never decides by this plane
     float deviation = 0.0;
     for (int j = 0; j < uSide; ++j)
         for (int i = 0; i < uSide; ++i) {

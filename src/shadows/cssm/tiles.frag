@@ -45,5 +45,7 @@ void main() {
     float m = float(uSide * uSide + 1);
     outStats = vec4(passing.r + m * float(covered & 7), passing.g + m * float(covered >> 3), passing.b, farthest);
     int b = int(passingNearest.b);
-    outNearestCounts = vec4(passingNearest.r + m * float(b & 15), passingNearest.g + m * float(b >> 4), leastGap, float(covered));
+    // A tile no layer covers: zeros, as cleared (renderTiles), however the tile came to be drawn.
+    outNearestCounts = vec4(passingNearest.r + m * float(b & 15), passingNearest.g + m * float(b >> 4), covered > 0 ? leastGap : 0.0,
+                            float(covered));
 }
