@@ -7,12 +7,13 @@
 // Redrawn only where something changed (ShadowFrame::reuseStillCasters, on by default): a face
 // whose light, map and still casters (ShadowFrame::casterDigest) are as in the last frame keeps
 // its depth when no animated caster reaches it; when one does, the still casters' depth comes
-// from a copy kept in `still` and only the animated ones are drawn over it. The tint is redrawn
-// when the translucent casters changed or the opaque depth under them did: an animated caster
-// whose texels miss the translucent casters' leaves the tint as it was (`translucentKeys`, which
-// techniques with maps of their own over the same depth, CSSM's, key on too). Moments redo only
-// the animated casters' texels (`stillKeys`, `movingTexels`). Measured on llvmpipe, default
-// scene (one animated sphere): see the README's "Shadow maps of still casters".
+// from a copy kept in `still` and only the animated ones are drawn over it. The tint is kept
+// while the still translucent and opaque casters are, and redrawn only where animated casters
+// were last frame or are now: translucent ones, and opaque ones over the translucent casters'
+// texels (`translucentKeys`, `translucentRedo`, which techniques with maps of their own over the
+// same depth, CSSM's, use too). Moments redo only the animated casters' texels (`stillKeys`,
+// `movingTexels`). Measured on llvmpipe, default scene (one animated sphere) and glass scene (a
+// flying glass ball): see the README's "Shadow maps of still casters".
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Sampler.h"
