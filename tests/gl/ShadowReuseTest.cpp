@@ -84,19 +84,22 @@ void expectSameMaps(render::Renderer& reusing, render::Renderer& redrawing, cons
     }
 }
 
+// Both renderers draw the frame at `time`: the same pictures and the same maps.
+void expectSameFrame(Pair& pair, const scene::Scene& s, float time, const std::string& what) {
+    const auto [reused, redrawn] = pair.render(s, time);
+    ASSERT_EQ(reused.size(), redrawn.size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < reused.size(); ++i) differing += reused[i] != redrawn[i];
+    EXPECT_EQ(differing, 0u) << what << " (t = " << time << ")";
+    expectSameMaps(pair.reusing, pair.redrawing, what + ", t = " + std::to_string(time));
+}
+
 class ShadowReuse : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
     scene::Scene s = stillAndMovingCasters();
     Pair pair(s, GetParam());
-    auto expectSame = [&](float time, const char* what) {
-        const auto [reused, redrawn] = pair.render(s, time);
-        ASSERT_EQ(reused.size(), redrawn.size());
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < reused.size(); ++i) differing += reused[i] != redrawn[i];
-        EXPECT_EQ(differing, 0u) << GetParam() << ", " << what << " (t = " << time << ")";
-        expectSameMaps(pair.reusing, pair.redrawing, std::string(GetParam()) + ", " + what);
-    };
+    auto expectSame = [&](float time, const char* what) { expectSameFrame(pair, s, time, std::string(GetParam()) + ", " + what); };
     expectSame(0.0f, "first frame");
     expectSame(0.25f, "the sphere moved");
     expectSame(0.25f, "the same frame again");
@@ -146,14 +149,7 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapWithAnimatedGlass) {
                    { "name": "stone", "shape": "sphere", "radius": 0.3,
                      "animation": [[0, 3, 1.6, -0.2], [1, -3, 1.6, -0.2], [2, 3, 1.6, -0.2]] } ] })");
     Pair pair(s, GetParam());
-    auto expectSame = [&](float time, const std::string& what) {
-        const auto [reused, redrawn] = pair.render(s, time);
-        ASSERT_EQ(reused.size(), redrawn.size());
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < reused.size(); ++i) differing += reused[i] != redrawn[i];
-        EXPECT_EQ(differing, 0u) << GetParam() << ", " << what << " (t = " << time << ")";
-        expectSameMaps(pair.reusing, pair.redrawing, std::string(GetParam()) + ", " + what + ", t = " + std::to_string(time));
-    };
+    auto expectSame = [&](float time, const char* what) { expectSameFrame(pair, s, time, std::string(GetParam()) + ", " + what); };
     for (float t : {0.0f, 0.1f, 0.1f, 0.2f, 0.35f, 0.5f, 0.6f, 0.6f, 0.75f, 0.9f, 1.2f}) expectSame(t, "glass ball and stone flying");
     s.objects[4].animation = {};  // the glass ball stops: only the stone moves, over the panes and away
     for (float t : {1.3f, 1.4f, 1.4f, 1.6f, 1.8f}) expectSame(t, "the stone alone");
