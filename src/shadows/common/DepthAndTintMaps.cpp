@@ -80,7 +80,6 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     const std::size_t faces = cube ? 6 : 1;
     m.depthHolds.assign(faces, 0);
     m.stillHolds.assign(faces, 0);
-    m.tintHolds.assign(faces, 0);
     m.translucentKeys.assign(faces, 0);
     m.translucentRedo.assign(faces, TexelRect(0));
     m.translucentMoving.assign(faces, TexelRect(0));
@@ -176,7 +175,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
-    const glm::vec4 white(1.0f);
     const bool reuse = frame.reuseStillCasters && frame.casterDigest;
     depthElsewhere_ = depthElsewhere;
     for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -195,11 +193,8 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
         gl::unbindTextureUnits(gpu::kLightingUnits);
         const glm::vec2 po = light.shadow.polygonOffset;
         // 1. opaque casters: depth only, with the light's polygon offset. 2. translucent casters
-        // in front of the opaque depth: transmittance multiplied into rgb (dst * src), the nearest
-        // translucent depth kept in alpha (MIN); no depth writes.
+        // in front of the opaque depth into the tint (redrawTint).
         const gl::PassState opaquePass = gl::PassState::depthOnly().withPolygonOffset(po.x, po.y);
-        gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
-        tintPass.depthWrite = false;
         glViewport(0, 0, ls.resolution, ls.resolution);
         for (int f = 0; f < ls.faceCount; ++f) {
             const auto face = static_cast<std::size_t>(f);
@@ -225,46 +220,55 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const std::uint64_t stillKey =
                 reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, region.cull, light, Motion::Still}), region.cull, po).value()
                       : 0;
-            // Translucent casters are depth-tested against the opaque depth: what they draw depends on
-            // it only where their texels are. An animated caster outside them leaves that depth the
-            // still casters'; one over them changes it (and its key 0 then never matches, so the
-            // frame after it has left redraws too).
-            // Animated translucent casters, and animated opaque ones over the translucent casters'
-            // texels, change what the translucent casters draw there only.
+            // Translucent casters are depth-tested against the opaque depth: animated translucent
+            // casters, and animated opaque ones over the translucent casters' texels, change what
+            // the translucent casters draw there only.
             const TexelRect movingTranslucent =
                 reuse ? texelRect(frame.casterBounds({Casters::Translucent, vp, light, Motion::Moving}), vp, ls.resolution) : TexelRect(0);
-            const TexelRect changed = unite(movingTranslucent, intersection(movingTexels, translucentTexels));
-            const std::uint64_t tintKey =
+            const std::uint64_t translucentKey =
                 reuse ? util::Digest().add(stillKey, frame.casterDigest({Casters::Translucent, vp, light, Motion::Still})).value() : 0;
-            const bool kept = tintKey != 0 && tintKey == m.translucentKeys[face];
-            m.translucentRedo[face] = kept ? unite(m.translucentMoving[face], changed) : TexelRect(0, 0, ls.resolution, ls.resolution);
-            m.translucentMoving[face] = changed;
-            m.translucentKeys[face] = tintKey;
+            const bool kept = keepTranslucent(m, face, translucentKey, unite(movingTranslucent, intersection(movingTexels, translucentTexels)));
             m.stillKeys[face] = stillKey;
             m.movingTexels[face] = movingTexels;
-            // The tint texels to draw again (nothing without a tint map): where the last translucent
-            // casters may have left something, and where this frame's are, or only what changed.
-            const bool tintKept = kept && tintKey == m.tintHolds[face];
-            const TexelRect redraw = !withTint_ ? TexelRect(0) : tintKept ? m.translucentRedo[face] : unite(m.tintDirty[face], tintWritten);
-            m.tintHolds[face] = tintKey;
+            // The tint texels to draw again (nothing without a tint map): what changed, or where the
+            // last translucent casters may have left something and where this frame's are.
+            const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tintWritten);
             if (light != depthElsewhere || (anyTranslucent && !isEmpty(redraw))) {
                 const gl::ScopedPassState state(opaquePass);
                 renderOpaque(frame, m, face, light, region, stillKey, moving);
             }
             if (isEmpty(redraw)) continue;
-            clearColourIn(m.tintFaces[face].id(), redraw, white);
-            m.tintDirty[face] = tintKept ? unite(m.tintDirty[face], tintWritten) : tintWritten;
-            if (anyTranslucent) {
-                const ScopedScissor scissor(redraw);
-                m.tintFaces[face].bind();
-                const gl::ScopedPassState state(tintPass);
-                tintProgram_.set("uLightViewProj", vp);
-                tintProgram_.set("uFarthest", around ? 1 : 0);
-                frame.drawCasters(tintProgram_, translucent);
-            }
-            if (around) boundFarthestAround(m, face, redraw);
+            m.tintDirty[face] = kept ? unite(m.tintDirty[face], tintWritten) : tintWritten;
+            redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw);
         }
     }
+}
+
+bool DepthAndTintMaps::keepTranslucent(LightMaps& m, std::size_t face, std::uint64_t key, const TexelRect& changed) {
+    const bool kept = key != 0 && key == m.translucentKeys[face];
+    m.translucentRedo[face] = kept ? unite(m.translucentMoving[face], changed) : TexelRect(0, 0, m.resolution, m.resolution);
+    m.translucentMoving[face] = changed;
+    m.translucentKeys[face] = key;
+    return kept;
+}
+
+void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::size_t face, const CasterSelection* translucent,
+                                  const TexelRect& redraw) {
+    const bool around = tintAlpha_ == TintAlpha::FarthestAround;
+    clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f));
+    if (translucent) {
+        // Transmittance multiplied into rgb (dst * src); alpha: the nearest translucent depth, or
+        // 1 - the farthest (MIN); no depth writes.
+        gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
+        tintPass.depthWrite = false;
+        const ScopedScissor scissor(redraw);
+        m.tintFaces[face].bind();
+        const gl::ScopedPassState state(tintPass);
+        tintProgram_.set("uLightViewProj", *translucent->cull);
+        tintProgram_.set("uFarthest", around ? 1 : 0);
+        frame.drawCasters(tintProgram_, *translucent);
+    }
+    if (around) boundFarthestAround(m, face, redraw);
 }
 
 void DepthAndTintMaps::bind(bool rawDepth) const {

@@ -41,9 +41,8 @@ public:
         // translucent caster in view, already white, has neither a clear nor a pass.
         std::vector<TexelRect> tintDirty;
         // Per face, digests of what a map holds (0: unknown or something that moves): `depth`
-        // drawn from still casters only, `still` (allocated in scenes that animate anything),
-        // the tint.
-        std::vector<std::uint64_t> depthHolds, stillHolds, tintHolds;
+        // drawn from still casters only, `still` (allocated in scenes that animate anything).
+        std::vector<std::uint64_t> depthHolds, stillHolds;
         // Per face, this frame's digest of what a pass of translucent casters depth-tested against
         // this map draws outside `translucentRedo`: the still translucent casters, the still opaque
         // depth and the light (0: unknown). A map drawn from that pass (the tint, CSSM's colour
@@ -118,6 +117,14 @@ private:
     // drawing as little as the digests allow; `stillKey` is their digest (0: do not reuse).
     void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region,
                       std::uint64_t stillKey, bool moving);
+    // Sets face `face`'s translucentKeys and translucentRedo for this frame's `key` and the
+    // texels `changed` by animated casters; true when the maps drawn last frame are kept (the
+    // same key), so that only translucentRedo is drawn again.
+    bool keepTranslucent(LightMaps& maps, std::size_t face, std::uint64_t key, const TexelRect& changed);
+    // Clears the tint in `redraw` and draws the `translucent` casters (none: nullptr) there again,
+    // with their bound (FarthestAround).
+    void redrawTint(const ShadowFrame& frame, LightMaps& maps, std::size_t face, const CasterSelection* translucent,
+                    const TexelRect& redraw);
     // TintAlpha::FarthestAround, after the tint pass redrew `drawn`: the drawn alpha (1 - the
     // farthest depth, MIN-blended) is kept in drawnAlpha there, and the tint's alpha becomes its
     // least over each texel's 3 x 3 neighbourhood wherever that reaches `drawn` (grown by one).
