@@ -6,7 +6,6 @@
 #include "gl/Program.h"
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
-#include "shadows/ShadowTechnique.h"
 
 #include <optional>
 #include <utility>

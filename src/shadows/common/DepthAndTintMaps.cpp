@@ -288,9 +288,10 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
 
 std::size_t DepthAndTintMaps::memoryBytes() const {
     std::size_t total = 0;
-    for (const auto& m : maps_) total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
-    for (const auto& m : maps_)
+    for (const auto& m : maps_) {
+        total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
         for (const auto& a : m.drawnAlpha) total += a.memoryBytes();
+    }
     return total;
 }
 

@@ -12,7 +12,6 @@
 #include "gl/Texture.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
-#include "shadows/ShadowTechnique.h"
 
 #include <glm/glm.hpp>
 #include <vector>

@@ -9,7 +9,6 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
-#include "shadows/ShadowTechnique.h"
 
 namespace penumbra::shadows {
 

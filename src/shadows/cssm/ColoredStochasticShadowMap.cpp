@@ -203,13 +203,9 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             glViewport(0, 0, m.resolution, m.resolution);
             m.targets[f].bind();
             const TexelRect rect = texelRect(casters, ls.viewProj[f], m.resolution);
-            if (kept) {  // the same casters drawn again there (the same draws: ξ hashes gl_PrimitiveID)
+            if (kept) {  // drawn again in `redo` below, by the same draws (ξ hashes gl_PrimitiveID)
                 clearColourIn(m.targets[f].id(), redo, glm::vec4(1.0f));
                 m.dirty[f] = unite(m.dirty[f], rect);
-                const ScopedScissor scissor(redo);
-                casters_.set("uLightViewProj", ls.viewProj[f]);
-                const gl::ScopedPassState state(casterPass);
-                frame.drawCasters(casters_, translucent);
             } else if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
                 clearColourIn(m.targets[f].id(), m.dirty[f], glm::vec4(1.0f));  // white where it may hold anything
                 m.dirty[f] = rect;
@@ -223,7 +219,8 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
                 glDrawArrays(GL_TRIANGLES, 0, 3);
                 gl::Sampler::unbind(0);
             }
-            if (!kept && !casters.empty()) {
+            if (!casters.empty()) {
+                const ScopedScissor scissor(redo, kept);
                 casters_.set("uLightViewProj", ls.viewProj[f]);
                 const gl::ScopedPassState state(casterPass);
                 frame.drawCasters(casters_, translucent);
