@@ -24,3 +24,8 @@ float materialCoverage(vec4 texel) {
 
 // Fraction of light a surface stops, rho = (1 - t) * alpha (McGuire & Enderton 2011).
 vec3 materialStopped(float coverage) { return (vec3(1.0) - uTransmission) * coverage; }
+
+// The transmittance 1 - rho of the surface being shaded, set by the lighting program before it
+// shades its lights: a lookup whose light-space product includes the receiver's own layer
+// divides it out (CSSM's translucent receivers, cssm/lookup.glsl).
+vec3 receiverTransmittance = vec3(1.0);

@@ -137,6 +137,7 @@ void main() {
     vec4 texel = materialTexel(vIn.uv);
     float coverage = materialCoverage(texel);
     vec3 albedo = uDiffuse * texel.rgb;
+    receiverTransmittance = vec3(1.0) - materialStopped(coverage);
     vec3 P = vIn.worldPos;
     vec3 N = normalize(vIn.normal);
     if (!gl_FrontFacing) N = -N;  // two-sided surfaces (planes, panes) light on both faces

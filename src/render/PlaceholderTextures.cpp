@@ -40,6 +40,7 @@ void PlaceholderTextures::bindAll() const {
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitTintCube + slot));
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitRawCube + slot));
     }
+    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) white2D_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slot));
     depthArray_.bind(gpu::kUnitLayered);
     whiteArray_.bind(gpu::kUnitScreenShadow);
     whiteArray_.bind(gpu::kUnitDepthTiles);

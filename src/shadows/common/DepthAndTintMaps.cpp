@@ -87,34 +87,30 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.movingTexels.assign(faces, TexelRect(0));
     if (!withTint_ || tintAlpha_ != TintAlpha::FarthestAround) return;
     if (!farthestAround_.id()) {
-        drawnAlpha_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
-                                          .fragment = "src/shadows/common/glsl/drawn_alpha.frag"});
         farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                               .fragment = "src/shadows/common/glsl/farthest_around.frag"});
     }
     const float noLayer = 1.0f;  // 1 - the farthest depth where no layer is
     for (int f = 0; f < (cube ? 6 : 1); ++f) {
         m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
-        m.drawnAlpha.push_back(gl::Texture::create2D(GL_R16F, res, res));
+        // Full precision: CSSM's translucent receivers tell their own layer from one just behind
+        // it by this depth (lookup.glsl, ownLayerFarthest); half floats of 1 - depth would blur
+        // that to 2^-9 of the distance from the far plane (8 cm in a 40 m sun box).
+        m.drawnAlpha.push_back(gl::Texture::create2D(GL_R32F, res, res));
         glClearTexImage(m.drawnAlpha.back().id(), 0, GL_RED, GL_FLOAT, &noLayer);
-        m.drawnAlphaTargets.push_back(gl::Framebuffer::colourOnly(m.drawnAlpha.back(), -1, "tint's drawn alpha " + std::to_string(res)));
+        m.tintFaces[f].attach(GL_COLOR_ATTACHMENT1, m.drawnAlpha.back());
+        m.tintFaces[f].setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
+        m.tintFaces[f].checkComplete("shadow tint map with drawn alpha " + std::to_string(res));
+        m.boundTargets.push_back(gl::Framebuffer::colourOnly(m.tintFaceViews.back(), -1, "tint's bound " + std::to_string(res)));
     }
 }
 
 void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& drawn) {
     fullscreenVao_.bind();
-    {  // 1. the drawn alpha, kept (the tint map's face as input)
-        const ScopedScissor scissor(drawn);
-        const gl::ScopedPassState state(gl::PassState::fullscreen());
-        m.drawnAlphaTargets[face].bind();
-        drawnAlpha_.use();
-        m.tintFaceViews[face].bind(0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
-    // 2. the least drawn alpha over each 3 x 3 neighbourhood into the tint's alpha, rgb kept.
+    // The least drawn alpha over each 3 x 3 neighbourhood into the tint's alpha, rgb kept.
     const ScopedScissor scissor(grown(drawn, glm::ivec2(1), m.resolution));
     const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend({GL_FUNC_ADD, GL_FUNC_ADD, GL_ZERO, GL_ONE, GL_ONE, GL_ZERO}));
-    m.tintFaces[face].bind();
+    m.boundTargets[face].bind();
     farthestAround_.use();
     farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
     m.drawnAlpha[face].bind(0);
@@ -256,6 +252,7 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
                                   const TexelRect& redraw) {
     const bool around = tintAlpha_ == TintAlpha::FarthestAround;
     clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f));
+    if (around) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
     if (translucent) {
         // Transmittance multiplied into rgb (dst * src); alpha: the nearest translucent depth, or
         // 1 - the farthest (MIN); no depth writes.
@@ -264,6 +261,10 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
         const ScopedScissor scissor(redraw);
         m.tintFaces[face].bind();
         const gl::ScopedPassState state(tintPass);
+        if (around) {  // the drawn alpha (attachment 1): 1 - the farthest depth, MIN
+            glBlendEquationi(1, GL_MIN);
+            glBlendFunci(1, GL_ONE, GL_ONE);
+        }
         tintProgram_.set("uLightViewProj", *translucent->cull);
         tintProgram_.set("uFarthest", around ? 1 : 0);
         frame.drawCasters(tintProgram_, *translucent);
@@ -277,6 +278,8 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
         const auto raw = static_cast<GLuint>(slots_.rawUnit(i));
         maps_[i].depth.bind(static_cast<GLuint>(slots_.depthUnit(i)));
         maps_[i].tint.bind(static_cast<GLuint>(slots_.tintUnit(i)));
+        if (!maps_[i].cube && !maps_[i].drawnAlpha.empty())
+            maps_[i].drawnAlpha[0].bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slots_.slot[i]));
         if (rawDepth) {
             maps_[i].depth.bind(raw);
             rawSampler_.bind(raw);

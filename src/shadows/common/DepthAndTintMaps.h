@@ -59,12 +59,14 @@ public:
         std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
-        // TintAlpha::FarthestAround: per face, the tint map's face as a 2D texture, and the drawn
-        // alpha before the bound (R16F), which the bound of any texel's neighbours is made from
-        // again when part of the tint is redrawn.
+        // TintAlpha::FarthestAround: per face, the drawn alpha (1 - the farthest layer's depth per
+        // texel, R32F), which the tint pass writes as its second target (tintFaces' attachment 1)
+        // and the bound of any texel's neighbours is made from again when part of the tint is
+        // redrawn; CSSM's translucent receivers also read it (bindDrawnFarthest). boundTargets
+        // write the bound into the tint's face alone.
         std::vector<gl::Texture> tintFaceViews;
         std::vector<gl::Texture> drawnAlpha;
-        std::vector<gl::Framebuffer> drawnAlphaTargets;
+        std::vector<gl::Framebuffer> boundTargets;
     };
 
     // What the alpha of a tint texel holds.
@@ -125,16 +127,16 @@ private:
     // with their bound (FarthestAround).
     void redrawTint(const ShadowFrame& frame, LightMaps& maps, std::size_t face, const CasterSelection* translucent,
                     const TexelRect& redraw);
-    // TintAlpha::FarthestAround, after the tint pass redrew `drawn`: the drawn alpha (1 - the
-    // farthest depth, MIN-blended) is kept in drawnAlpha there, and the tint's alpha becomes its
-    // least over each texel's 3 x 3 neighbourhood wherever that reaches `drawn` (grown by one).
+    // TintAlpha::FarthestAround, after the tint pass redrew `drawn` (and with it the drawn alpha):
+    // the tint's alpha becomes the drawn alpha's least over each texel's 3 x 3 neighbourhood
+    // wherever that reaches `drawn` (grown by one).
     void boundFarthestAround(LightMaps& maps, std::size_t face, const TexelRect& drawn);
     GLenum tintFilter() const { return tintAlpha_ == TintAlpha::FarthestAround ? GL_LINEAR : filter_; }
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
     gl::Program tintProgram_;
-    gl::Program drawnAlpha_, farthestAround_;  // built with the first FarthestAround map
+    gl::Program farthestAround_;  // built with the first FarthestAround map
     gl::VertexArray fullscreenVao_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;

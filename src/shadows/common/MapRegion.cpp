@@ -44,10 +44,10 @@ ScopedScissor::~ScopedScissor() {
     if (enabled_) glDisable(GL_SCISSOR_TEST);
 }
 
-void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour) {
+void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour, GLint drawBuffer) {
     if (isEmpty(rect)) return;
     const ScopedScissor scissor(rect);
-    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &colour.x);
+    glClearNamedFramebufferfv(framebuffer, GL_COLOR, drawBuffer, &colour.x);
 }
 
 }  // namespace penumbra::shadows

@@ -86,7 +86,7 @@ private:
     bool enabled_;
 };
 
-// Clears colour attachment 0 of `framebuffer` to `colour` inside `rect` only (nothing if empty).
-void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour);
+// Clears draw buffer `drawBuffer` of `framebuffer` to `colour` inside `rect` only (nothing if empty).
+void clearColourIn(GLuint framebuffer, const TexelRect& rect, const glm::vec4& colour, GLint drawBuffer = 0);
 
 }  // namespace penumbra::shadows

@@ -11,6 +11,7 @@ struct ShadowSite {
     bool inside;
     vec3 coord;      // 2D: (u, v, reference depth); cube: direction from the light
     float depth;     // reference depth (window space), bias applied
+    vec3 surface;    // 2D: the receiver point itself, no bias nor normal offset: (u, v, window depth)
     vec3 tangent, bitangent;  // cube: one texel step in direction space
     float texelWorld;         // world size of one texel at the receiver
     float resolution;         // texels across the map
@@ -33,6 +34,8 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     s.inside = sc.inside && s.slot >= 0;
     s.coord = s.cube ? sc.uv : vec3(sc.uv.xy, sc.depth);
     s.depth = sc.depth;
+    vec4 surface = L.shadowMatrix * vec4(P, 1.0);  // folds away in lookups that never read it
+    s.surface = surface.xyz / surface.w;
     s.texelWorld = shadowTexelWorldSize(light, P);
     float res = L.misc.y;
     s.resolution = res;

@@ -11,6 +11,8 @@ layout(binding = kUnitRaw2D) uniform sampler2D uShadowRaw[kMaxShadow2D];
 layout(binding = kUnitShadowCube) uniform samplerCubeShadow uShadowCube[kMaxShadowCube];
 layout(binding = kUnitTintCube) uniform samplerCube uShadowTintCube[kMaxShadowCube];
 layout(binding = kUnitRawCube) uniform samplerCube uShadowRawCube[kMaxShadowCube];
+// 1 - the farthest translucent layer's depth per texel (DepthAndTintMaps::TintAlpha::FarthestAround).
+layout(binding = kUnitDrawnFarthest2D) uniform sampler2D uShadowDrawn[kMaxShadow2D];
 
 #define SLOT_SWITCH_4(EXPR) \
     switch (slot) { case 0: return EXPR(0); case 1: return EXPR(1); case 2: return EXPR(2); default: return EXPR(3); }
@@ -75,6 +77,12 @@ vec4 shadowRawLodCube(int slot, vec3 dir) { return shadowRawCube(slot, dir, vec3
 // Alpha of the 2 x 2 raw texels around uv (2D) or dir (cube), without filtering.
 vec4 shadowRawGatherAlpha2D(int slot, vec2 uv) {
 #define S(i) textureGather(uShadowRaw[i], uv, 3)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+// The farthest translucent layer's window depth at the 2 x 2 texels around uv (gather order).
+vec4 shadowDrawnFarthestGather2D(int slot, vec2 uv) {
+#define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 0))
     SLOT_SWITCH_4(S)
 #undef S
 }

@@ -6,9 +6,13 @@
 // which MIN makes 1 - the farthest layer's depth.
 #include "shaders/common/material.glsl"
 in vec2 vUv;
+// With FarthestAround the second output (R32F, MIN) keeps 1 - the farthest depth per texel in
+// full precision, where the bound is made from and CSSM's translucent receivers read it.
 layout(location = 0) out vec4 outTransmit;
+layout(location = 1) out float outDrawn;
 uniform int uFarthest;
 void main() {
     float coverage = materialCoverage(materialTexel(vUv));
     outTransmit = vec4(vec3(1.0) - materialStopped(coverage), uFarthest != 0 ? 1.0 - gl_FragCoord.z : gl_FragCoord.z);
+    outDrawn = 1.0 - gl_FragCoord.z;
 }
