@@ -62,8 +62,8 @@ public:
         // TintAlpha::FarthestAround: per face, the drawn alpha (1 - the farthest layer's depth per
         // texel, R32F), which the tint pass writes as its second target (tintFaces' attachment 1)
         // and the bound of any texel's neighbours is made from again when part of the tint is
-        // redrawn; CSSM's translucent receivers also read it (bindDrawnFarthest). boundTargets
-        // write the bound into the tint's face alone.
+        // redrawn; CSSM's translucent receivers also read it (2D maps: bind(), at
+        // gpu::kUnitDrawnFarthest2D + slot). boundTargets write the bound into the tint's face alone.
         std::vector<gl::Texture> tintFaceViews;
         std::vector<gl::Texture> drawnAlpha;
         std::vector<gl::Framebuffer> boundTargets;

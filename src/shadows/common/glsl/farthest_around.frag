@@ -1,7 +1,7 @@
 #version 450 core
-// DepthAndTintMaps::TintAlpha::FarthestAround, step 2: the least drawn alpha (1 - the farthest
-// translucent layer's depth, which transmit.frag writes as its second output) over each texel's 3 x 3 neighbourhood, into the
-// tint map's alpha (blending keeps its rgb). Each 2 x 2 footprint of a
+// DepthAndTintMaps::TintAlpha::FarthestAround, after the tint pass: the least drawn alpha (1 - the
+// farthest translucent layer's depth, transmit.frag's second output) over each texel's 3 x 3
+// neighbourhood, into the tint map's alpha (blending keeps its rgb). Each 2 x 2 footprint of a
 // bilinear fetch lies inside the neighbourhood of every texel it blends, so the fetched alpha is
 // at most the least of those four: a conservative "behind every layer there" test in one fetch.
 // Map edges clamp, as the lookup's sampler does. Cube faces: a fetch near a face's edge blends the next
