@@ -47,7 +47,7 @@ std::string safeName(std::string s) {
 
 int runReference(const ReportJob& job) {
     Session s = open(job);
-    Comparison cmp(s.scene, job.width, job.height, job.time);
+    Comparison cmp(s.scene, job.width, job.height, job.time, job.translucentReceivers);
     cmp.traceReference(job.samples, true);
     util::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
     json lights = json::array();
@@ -74,7 +74,7 @@ int runCompare(const ReportJob& job) {
             throw std::invalid_argument("unknown shadow technique '" + t + "'; known: " + shadows::knownTechniqueNames());
     if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
     Session s = open(job);
-    Comparison cmp(s.scene, job.width, job.height, job.time);
+    Comparison cmp(s.scene, job.width, job.height, job.time, job.translucentReceivers);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());
     util::writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);

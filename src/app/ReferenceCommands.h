@@ -22,6 +22,7 @@ struct ReportJob {
     int timedFrames = 3;
     int motionFrames = 0;                // > 1: also score a slow pan (Comparison::evaluateMotion)
     float motionPixelsPerFrame = 0.5f;
+    bool translucentReceivers = false;  // score the nearest surface, translucent ones too (Comparison)
 };
 
 // Writes reference.png, visibility_<i>.png per light and reference.json. Returns exit code.

@@ -32,11 +32,12 @@ std::vector<glm::vec3> Comparison::capture(render::Renderer& renderer, OutputMod
     return out;
 }
 
-Comparison::Comparison(scene::Scene& scene, int width, int height, float time)
-    : scene_(scene), width_(width), height_(height), time_(time) {
+Comparison::Comparison(scene::Scene& scene, int width, int height, float time, bool translucentReceivers)
+    : scene_(scene), width_(width), height_(height), time_(time), translucentReceivers_(translucentReceivers) {
     if (scene.lights.empty()) throw InputError(scene.source, "the scene has no lights: there are no shadows to compare");
     render::RenderOptions options;
     options.technique = "none";
+    options.debugTranslucent = translucentReceivers;
     render::Renderer renderer(scene, options);
     points_.width = width;
     points_.height = height;
@@ -74,9 +75,10 @@ void Comparison::traceReference(int samples, bool showProgress, const Progress& 
 namespace {
 
 render::RenderOptions optionsFor(const std::string& technique, int shadowResolution,
-                                 const shadows::ParameterValues& parameters) {
+                                 const shadows::ParameterValues& parameters, bool translucentReceivers) {
     render::RenderOptions options;
     options.technique = technique;
+    options.debugTranslucent = translucentReceivers;
     options.shadowResolution = shadowResolution;
     options.parameters = parameters;
     return options;
@@ -89,7 +91,7 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;
-    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters, translucentReceivers_));
 
     // Cost of the technique's real frames (shaded, translucency and fog included).
     render::OffscreenTarget target(width_, height_);
@@ -143,7 +145,7 @@ constexpr float kCrawlThreshold = 8.0f / 255.0f;
 
 MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowResolution, int frames,
                                        float pixelsPerFrame, const shadows::ParameterValues& parameters) {
-    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters, translucentReceivers_));
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const scene::Camera& start = scene_.camera;
     const glm::vec3 forward = glm::normalize(start.target - start.position);

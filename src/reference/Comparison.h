@@ -41,9 +41,10 @@ struct MotionScore {
 
 class Comparison {
 public:
-    // Captures the G-buffer, ambient term and each light's unshadowed contribution.
-    // Throws InputError when the scene has no lights.
-    Comparison(scene::Scene& scene, int width, int height, float time);
+    // Captures the G-buffer, ambient term and each light's unshadowed contribution, of the
+    // nearest opaque surface, or with `translucentReceivers` of the nearest surface (translucent
+    // ones are then scored by the light reaching them). Throws InputError when the scene has no lights.
+    Comparison(scene::Scene& scene, int width, int height, float time, bool translucentReceivers = false);
 
     // Ray-traces every light's visibility (samples per pixel for area lights). `onProgress`, if
     // set, hears the share done over all lights (0..1) from a worker thread now and then. No GL:
@@ -79,6 +80,7 @@ private:
     scene::Scene& scene_;
     int width_, height_;
     float time_;
+    bool translucentReceivers_;
     SurfacePoints points_;
     std::vector<glm::vec3> ambient_;
     std::vector<std::vector<glm::vec3>> contribution_;  // per light

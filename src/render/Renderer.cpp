@@ -256,9 +256,12 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     {
         gl::DebugGroup group("translucent");
         timer_.begin(Pass::Translucent);
-        // Debug channels show the nearest opaque surface only.
+        // Debug channels show the nearest opaque surface, or with debugTranslucent the nearest
+        // surface (drawSurfaces: depth-tested and written, not blended).
         const TransparencyMode mode = options_.transparency;
-        if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
+        if (!shaded && options_.debugTranslucent) {
+            drawSurfaces(draws, true, camera, aspect);
+        } else if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
             drawSurfaces(draws, true, camera, aspect);
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
@@ -352,7 +355,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
-    if (translucent) {
+    if (translucent && options_.output == OutputMode::Shaded) {
         state.withBlend(overTransmittance());
         state.depthWrite = false;
     } else if (options_.depthPrepass) {

@@ -41,6 +41,9 @@ struct RenderOptions {
     bool debugOverlay = false;
     OutputMode output = OutputMode::Shaded;
     int debugLight = 0;  // which light OutputMode::Visibility shows
+    // Debug channels (output != Shaded) show the nearest surface, translucent ones too, where by
+    // default they show the nearest opaque one: `compare --translucent-receivers`.
+    bool debugTranslucent = false;
     // Technique parameters as text ("radius_texels" = "3", "filter" = "cross13",
     // "stabilize" = "true"); names a technique lacks are ignored unless strictParameters is set
     // (then they are an error naming the known ones).
