@@ -65,6 +65,25 @@ TEST(Compare, TranslucentReceiversAreScoredByTheLightReachingThem) {
     EXPECT_LT(hardOnOpaque.wrongShare, 0.02);
 }
 
+// A pane alone under a spot light is lit whole: nothing lies between it and the light. The plain
+// map's tint alpha marks the nearest translucent layer; kept as that layer's window depth in half
+// floats, its rounding near 1 (where a perspective light's depths crowd) outgrew the receiver's
+// bias, and the pane tinted itself over about half its texels. Kept as 1 - depth it does not.
+// Measured (llvmpipe, 160 x 160, translucent receivers): hard 17.2 % wrong with depth, 0.05 %
+// with 1 - depth.
+TEST(Compare, APaneUnderASpotLightDoesNotTintItself) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 4, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 30 },
+      "lights": [ { "type": "spot", "position": [2, 5, 0.5], "direction": [-0.4, -1, -0.1], "angle_deg": 40, "shadow": { "resolution": 1024 } } ],
+      "objects": [ { "shape": "plane", "size": [8, 8], "position": [0, -0.5, 0] },
+                   { "shape": "plane", "size": [0.9, 0.9], "rotation_deg": [0, 20, 0], "material": { "alpha": 1, "transmission": [0.1, 0.9, 0.1] } } ] })");
+    reference::Comparison cmp(s, 160, 160, 0.0f, /*translucentReceivers=*/true);
+    cmp.traceReference(1, false);
+    const auto hard = cmp.evaluate("hard", 0, 0);
+    std::printf("a pane under a spot light: hard %.2f%% wrong\n", 100 * hard.wrongShare);
+    EXPECT_LT(hard.wrongShare, 0.02);
+}
+
 TEST(Compare, SceneWithoutLightsSaysSo) {
     scene::Scene s = sceneFromJson(R"({ "objects": [ { "shape": "box" } ] })");
     try {

@@ -251,12 +251,13 @@ bool DepthAndTintMaps::keepTranslucent(LightMaps& m, std::size_t face, std::uint
 void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::size_t face, const CasterSelection* translucent,
                                   const TexelRect& redraw) {
     const bool around = tintAlpha_ == TintAlpha::FarthestAround;
-    clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f));
+    clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f, 1.0f, 1.0f, around ? 1.0f : 0.0f));  // alpha: no layer
     if (around) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
     if (translucent) {
-        // Transmittance multiplied into rgb (dst * src); alpha: the nearest translucent depth, or
-        // 1 - the farthest (MIN); no depth writes.
-        gl::PassState tintPass = gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, GL_MIN, GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
+        // Transmittance multiplied into rgb (dst * src); alpha 1 - depth: of the nearest
+        // translucent layer (MAX), or of the farthest (MIN); no depth writes.
+        gl::PassState tintPass =
+            gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, static_cast<GLenum>(around ? GL_MIN : GL_MAX), GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
         tintPass.depthWrite = false;
         const ScopedScissor scissor(redraw);
         m.tintFaces[face].bind();
@@ -266,7 +267,6 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
             glBlendFunci(1, GL_ONE, GL_ONE);
         }
         tintProgram_.set("uLightViewProj", *translucent->cull);
-        tintProgram_.set("uFarthest", around ? 1 : 0);
         frame.drawCasters(tintProgram_, *translucent);
     }
     if (around) boundFarthestAround(m, face, redraw);

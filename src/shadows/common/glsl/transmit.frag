@@ -1,18 +1,17 @@
 #version 450 core
 // Translucent casters as seen from the light (the per-light colour buffer of Nápravník 2020):
 // rgb = fraction of light passing, multiplied over every layer by blending (dst * src);
-// a = depth of the nearest translucent layer (MIN blending), so receivers in front of it
-// stay untinted; or, with uFarthest (DepthAndTintMaps::TintAlpha::FarthestAround), 1 - depth,
-// which MIN makes 1 - the farthest layer's depth.
+// a = 1 - depth, which MAX blending makes 1 - the nearest translucent layer's depth, so receivers
+// in front of it stay untinted (DepthAndTintMaps::TintAlpha::NearestLayer), or MIN 1 - the
+// farthest layer's (FarthestAround).
 #include "shaders/common/material.glsl"
 in vec2 vUv;
 // With FarthestAround the second output (R32F, MIN) keeps 1 - the farthest depth per texel in
 // full precision, where the bound is made from and CSSM's translucent receivers read it.
 layout(location = 0) out vec4 outTransmit;
 layout(location = 1) out float outDrawn;
-uniform int uFarthest;
 void main() {
     float coverage = materialCoverage(materialTexel(vUv));
-    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), uFarthest != 0 ? 1.0 - gl_FragCoord.z : gl_FragCoord.z);
+    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), 1.0 - gl_FragCoord.z);
     outDrawn = 1.0 - gl_FragCoord.z;
 }
