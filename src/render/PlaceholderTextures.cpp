@@ -34,13 +34,15 @@ PlaceholderTextures::PlaceholderTextures()
 void PlaceholderTextures::bindAll() const {
     // Units from kUnitDualDepth up belong to the camera-transparency passes, which bind them.
     for (int unit = 0; unit < gpu::kUnitDualDepth; ++unit) white2D_.bind(static_cast<GLuint>(unit));
-    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) depth2D_.bind(static_cast<GLuint>(gpu::kUnitShadow2D + slot));
+    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) {
+        depth2D_.bind(static_cast<GLuint>(gpu::kUnitShadow2D + slot));
+        white2D_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slot));
+    }
     for (int slot = 0; slot < gpu::kMaxShadowCube; ++slot) {
         depthCube_.bind(static_cast<GLuint>(gpu::kUnitShadowCube + slot));
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitTintCube + slot));
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitRawCube + slot));
     }
-    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) white2D_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slot));
     depthArray_.bind(gpu::kUnitLayered);
     whiteArray_.bind(gpu::kUnitScreenShadow);
     whiteArray_.bind(gpu::kUnitDepthTiles);

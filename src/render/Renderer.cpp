@@ -259,9 +259,8 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         // Debug channels show the nearest opaque surface, or with debugTranslucent the nearest
         // surface (drawSurfaces: depth-tested and written, not blended).
         const TransparencyMode mode = options_.transparency;
-        if (!shaded && options_.debugTranslucent) {
-            drawSurfaces(draws, true, camera, aspect);
-        } else if (shaded && (mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles)) {
+        const bool sorted = mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles;
+        if (shaded ? sorted : options_.debugTranslucent) {
             drawSurfaces(draws, true, camera, aspect);
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
