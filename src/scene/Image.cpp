@@ -83,8 +83,15 @@ struct JpegDecode {
     int width = 0, height = 0;
 };
 
+// Whatever stb_image would take for a JPEG goes to libjpeg instead, so that stb's JPEG decoder
+// never runs. stb's test is its marker reader: 0xFF, any number of 0xFF fill bytes, then SOI
+// (0xD8). An input with fill bytes before SOI (found by the image fuzzer) reached stb's decoder,
+// which read far out of bounds; libjpeg refuses it ("Not a JPEG file").
 static bool isJpeg(const std::uint8_t* data, std::size_t bytes) {
-    return bytes >= 3 && data[0] == 0xFF && data[1] == 0xD8 && data[2] == 0xFF;
+    if (bytes < 2 || data[0] != 0xFF) return false;
+    std::size_t i = 1;
+    while (i < bytes && data[i] == 0xFF) ++i;
+    return i < bytes && data[i] == 0xD8;
 }
 
 // libjpeg reports errors by calling error_exit, which must not return: it jumps back to
