@@ -9,6 +9,7 @@ uniform float uShininess;
 uniform float uAlpha;          // coverage (McGuire & Enderton 2011)
 uniform vec3 uTransmission;    // t_rgb
 uniform float uAlphaCutoff;    // > 0: alpha test
+uniform int uClosedPart;       // 1: the part bounds a solid of this one material (render/GpuScene.h)
 
 #ifdef MATERIAL_UNTEXTURED  // render/LightingProgram.h: no sample even under a false uniform branch
 vec4 materialTexel(vec2 uv) { return vec4(1.0); }

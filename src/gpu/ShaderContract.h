@@ -50,7 +50,7 @@ GPU_CONST kUnitDualDepth = 28;      // camera transparency: dual depth peeling b
 GPU_CONST kUnitStochasticDepth = 29;  // stochastic transparency's multisampled depth
 GPU_CONST kUnitPeelDepth = 30;      // depth peeling: the previous layer
 GPU_CONST kUnitOpaqueDepth = 31;    // the opaque surfaces' depth
-GPU_CONST kUnitDrawnFarthest2D = 32;  // R32F, 1 - the farthest translucent layer per texel (CSSM's translucent receivers)
+GPU_CONST kUnitDrawnFarthest2D = 32;  // RG32F, 1 - the farthest translucent layer / entry per texel (translucent receivers)
 GPU_CONST kLightingUnits = 36;      // units the lighting shader may read (all unbound before shadow passes)
 
 // DepthTileBounds: level-0 tiles of kDepthTile^2 texels, each bounding its texels and

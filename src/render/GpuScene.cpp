@@ -28,7 +28,15 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         g.vao.attribute(0, 0, 3, offsetof(scene::Vertex, position));
         g.vao.attribute(1, 0, 3, offsetof(scene::Vertex, normal));
         g.vao.attribute(2, 0, 2, offsetof(scene::Vertex, uv));
+        g.closedParts.assign(mesh.parts.size(), false);
         meshes_.push_back(std::move(g));
+    }
+    for (const auto& object : scene.objects) {
+        const auto meshIndex = static_cast<std::size_t>(object.mesh);
+        const scene::Mesh& mesh = scene.meshes[meshIndex];
+        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
+            if (scene.material(object, mesh.parts[p]).translucent() && !meshes_[meshIndex].closedParts[p])
+                meshes_[meshIndex].closedParts[p] = mesh.partIsClosed(p);
     }
     for (const auto& img : scene.images) images_.push_back(uploadImage(img, anisotropy));
 }
@@ -117,6 +125,7 @@ void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t fir
     program.set("uTransmission", m.transmission);
     program.set("uAlphaCutoff", m.alphaCutoff);
     program.set("uHasTexture", m.diffuseTexture >= 0 ? 1 : 0);
+    program.set("uClosedPart", m.diffuseTexture < 0 && meshes_[d.mesh].closedParts[d.part] ? 1 : 0);
     if (m.diffuseTexture >= 0) images_[static_cast<std::size_t>(m.diffuseTexture)].bind(gpu::kUnitDiffuse);
     program.use();
     meshes_[d.mesh].vao.bind();

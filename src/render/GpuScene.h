@@ -35,7 +35,9 @@ public:
 
     // All parts of all objects at `time`; translucent ones sorted back to front from `eye`.
     std::vector<Draw> draws(float time, const glm::vec3& eye) const;
-    // Sets uModel and material uniforms on `program`, binds the texture, issues the draw.
+    // Sets uModel, material uniforms and uClosedPart (the part bounds a solid of one untextured
+    // material: a light ray leaves it through a face of the same transmittance) on `program`,
+    // binds the texture, issues the draw.
     void draw(const Draw& d, const gl::Program& program) const;
     // The same, skipping the part's clusters (MeshClusters.h) outside the clip volume of
     // `viewProj`; returns the triangles drawn.
@@ -52,6 +54,9 @@ private:
         gl::Buffer vertices, indices;
         gl::VertexArray vao;
         std::vector<std::vector<MeshCluster>> clusters;  // per part; empty for parts drawn whole
+        // Per part: it bounds a solid (Mesh::partIsClosed), found for parts some object draws
+        // translucent; false for the others.
+        std::vector<bool> closedParts;
     };
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;

@@ -163,7 +163,8 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     lightBlock_.update(0, sizeof(block), &block);
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
     // A material made translucent at run time rebuilds the programs once (useLightLayout).
-    useLightLayout(lightLayoutDefines(block, slots_.sun, anyTranslucentCaster(draws)));
+    const bool translucentCasters = anyTranslucentCaster(draws);
+    useLightLayout(lightLayoutDefines(block, slots_.sun, translucentCasters));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
@@ -205,6 +206,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return digest.value();
         };
         frame.reuseStillCasters = options_.reuseStillCasters;
+        frame.translucentCasters = translucentCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;

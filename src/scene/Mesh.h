@@ -49,6 +49,10 @@ struct Mesh {
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     void computeBounds();
+    // Whether part `part`'s triangles bound a solid: vertices welded by position, every edge
+    // shared by exactly two triangles that run it in opposite directions, wound counter-clockwise
+    // seen from outside (positive volume). Degenerate triangles are left out. O(triangles).
+    bool partIsClosed(std::size_t part) const;
 };
 
 }  // namespace penumbra::scene

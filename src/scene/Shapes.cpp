@@ -48,8 +48,11 @@ Mesh sphere(float r, int slices, int stacks) {
     for (int i = 0; i <= stacks; ++i) {
         const float v = float(i) / stacks, phi = v * glm::pi<float>();
         for (int j = 0; j <= slices; ++j) {
-            const float u = float(j) / slices, theta = u * glm::two_pi<float>();
-            const glm::vec3 n{std::sin(phi) * std::cos(theta), std::cos(phi), -std::sin(phi) * std::sin(theta)};
+            const float u = float(j) / slices, theta = j == slices ? 0.0f : u * glm::two_pi<float>();
+            // The seam and the poles repeat their positions exactly (sin(2 pi) and sin(pi) are not 0
+            // in floats), so that the surface is closed (Mesh::partIsClosed).
+            const float ring = i == 0 || i == stacks ? 0.0f : std::sin(phi), height = i == 0 ? 1.0f : i == stacks ? -1.0f : std::cos(phi);
+            const glm::vec3 n{ring * std::cos(theta), height, -ring * std::sin(theta)};
             m.vertices.push_back({n * r, n, {u, v}});
         }
     }

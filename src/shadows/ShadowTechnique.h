@@ -97,6 +97,8 @@ struct ShadowFrame {
     std::function<std::uint64_t(const CasterSelection& selection)> casterDigest;
     // false: every map is redrawn every frame (`--redraw-shadow-maps`: the bare per-frame cost).
     bool reuseStillCasters = true;
+    // Some object casts a shadow through a translucent material (the lookups' SCENE_TRANSLUCENT_CASTERS).
+    bool translucentCasters = true;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0), each
     // with its material's program of `programs` bound: depth pre-passes and receiver masks of
     // screen-space techniques.

@@ -37,20 +37,23 @@ TEST(Compare, HardShadowErrorIsSmallAndGrowsAtLowResolution) {
 }
 
 // With translucent receivers (compare --translucent-receivers) the metric scores the nearest
-// surface, panes included, by the light reaching it. A grey pane lit through a green one: the plain
-// map's tint multiplies every translucent layer in front of the nearest opaque caster, the grey
-// pane's own too, so each of its pixels gets green x grey (0.05, 0.45, 0.05) against the truth's
-// green; CSSM's layers in front of the receiver give green. Scoring only opaque surfaces, the
-// ground behind the pane is what those pixels show, and there the plain map is right.
-// Measured (llvmpipe, 160 x 160): hard 17.7 % wrong with translucent receivers (the grey pane is
-// 17.6 % of the picture), 0.72 % without (shadow edges); cssm2 0.61 % with them.
+// surface, panes included, by the light reaching it. A grey pane lit through a green one, with a
+// blue pane behind it as the light sees it: the plain map's tint multiplies every translucent
+// layer in front of the nearest opaque caster, and where a layer lies behind the receiver it
+// cannot tell the receiver's own and the blue one from those in front (tintThroughOwnLayers2D),
+// so each grey pixel gets green x grey x blue against the truth's green; CSSM's layers in front of
+// the receiver give green. Scoring only opaque surfaces, the ground behind the panes is what those
+// pixels show, and there the plain map is right.
+// Measured (llvmpipe, 160 x 160): hard 17.9 % wrong with translucent receivers, 0.53 % without
+// (shadow edges); cssm2 0.56 % with them.
 TEST(Compare, TranslucentReceiversAreScoredByTheLightReachingThem) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 4, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 30 },
       "lights": [ { "type": "directional", "direction": [1.5, -1, 0.1], "shadow": { "resolution": 1024 } } ],
       "objects": [ { "shape": "plane", "size": [8, 8], "position": [0, -0.5, 0] },
                    { "shape": "plane", "size": [1.6, 1.6], "position": [-1.5, 1, -0.1], "material": { "alpha": 1, "transmission": [0.1, 0.9, 0.1] } },
-                   { "shape": "plane", "size": [0.9, 0.9], "rotation_deg": [0, 20, 0], "material": { "alpha": 1, "transmission": 0.5 } } ] })");
+                   { "shape": "plane", "size": [0.9, 0.9], "rotation_deg": [0, 20, 0], "material": { "alpha": 1, "transmission": 0.5 } },
+                   { "shape": "plane", "size": [1.4, 1.4], "position": [0.45, -0.3, 0.03], "material": { "alpha": 1, "transmission": [0.1, 0.1, 0.9] } } ] })");
     reference::Comparison panes(s, 160, 160, 0.0f, /*translucentReceivers=*/true);
     panes.traceReference(1, false);
     const auto hard = panes.evaluate("hard", 0, 0);

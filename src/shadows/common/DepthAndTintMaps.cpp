@@ -85,24 +85,34 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.translucentMoving.assign(faces, TexelRect(0));
     m.stillKeys.assign(faces, 0);
     m.movingTexels.assign(faces, TexelRect(0));
-    if (!withTint_ || tintAlpha_ != TintAlpha::FarthestAround) return;
-    if (!farthestAround_.id()) {
+    // FarthestAround's bound is made from the drawn alpha; NearestLayer maps get theirs in scenes
+    // with translucent casters (render).
+    if (withTint_ && tintAlpha_ == TintAlpha::FarthestAround) ensureDrawn(m);
+}
+
+bool DepthAndTintMaps::ensureDrawn(LightMaps& m) {
+    const bool around = tintAlpha_ == TintAlpha::FarthestAround;
+    if (!m.drawnAlpha.empty() || (m.cube && !around)) return false;  // point lights' lookups have no units for it
+    if (around && !farthestAround_.id()) {
         farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                               .fragment = "src/shadows/common/glsl/farthest_around.frag"});
     }
-    const float noLayer = 1.0f;  // 1 - the farthest depth where no layer is
-    for (int f = 0; f < (cube ? 6 : 1); ++f) {
-        m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
-        // Full precision: CSSM's translucent receivers tell their own layer from one just behind
-        // it by this depth (lookup.glsl, ownLayerFarthest); half floats of 1 - depth would blur
-        // that to 2^-9 of the distance from the far plane (8 cm in a 40 m sun box).
-        m.drawnAlpha.push_back(gl::Texture::create2D(GL_R32F, res, res));
-        glClearTexImage(m.drawnAlpha.back().id(), 0, GL_RED, GL_FLOAT, &noLayer);
+    const int res = m.resolution;
+    const float noLayer[2] = {1.0f, 1.0f};  // 1 - the farthest depths where no layer is
+    for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
+        // Full precision: translucent receivers tell their own layer from one just behind it by
+        // these depths; half floats of 1 - depth would blur that to 2^-9 of the distance from the
+        // far plane (8 cm in a 40 m sun box).
+        m.drawnAlpha.push_back(gl::Texture::create2D(GL_RG32F, res, res));
+        glClearTexImage(m.drawnAlpha.back().id(), 0, GL_RG, GL_FLOAT, noLayer);
         m.tintFaces[f].attach(GL_COLOR_ATTACHMENT1, m.drawnAlpha.back());
         m.tintFaces[f].setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
         m.tintFaces[f].checkComplete("shadow tint map with drawn alpha " + std::to_string(res));
+        if (!around) continue;
+        m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
         m.boundTargets.push_back(gl::Framebuffer::colourOnly(m.tintFaceViews.back(), -1, "tint's bound " + std::to_string(res)));
     }
+    return true;
 }
 
 void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& drawn) {
@@ -182,6 +192,9 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
         // first reaches the light: the maps a technique holds then do not depend on the time.
         LightMaps& m = maps_[i];
         if (reuse && frame.scene && frame.scene->animated()) ensureStill(m);
+        // Likewise the drawn alpha, whenever the scene has translucent casters; made for a map
+        // that holds a tint already, it takes the whole tint drawn again.
+        if (withTint_ && frame.translucentCasters && ensureDrawn(m)) m.translucentKeys.assign(m.translucentKeys.size(), 0);
         gl::DebugGroup group(("shadow map: " + light.name).c_str());
         // Unbind every texture unit first. Measured on llvmpipe: with the previous frame's lookup
         // textures still bound, every shadow map after the first in a frame costs 7-10x more to
@@ -250,9 +263,9 @@ bool DepthAndTintMaps::keepTranslucent(LightMaps& m, std::size_t face, std::uint
 
 void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::size_t face, const CasterSelection* translucent,
                                   const TexelRect& redraw) {
-    const bool around = tintAlpha_ == TintAlpha::FarthestAround;
+    const bool around = tintAlpha_ == TintAlpha::FarthestAround, drawn = face < m.drawnAlpha.size();
     clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f, 1.0f, 1.0f, around ? 1.0f : 0.0f));  // alpha: no layer
-    if (around) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
+    if (drawn) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
     if (translucent) {
         // Transmittance multiplied into rgb (dst * src); alpha 1 - depth: of the nearest
         // translucent layer (MAX), or of the farthest (MIN); no depth writes.
@@ -262,7 +275,7 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
         const ScopedScissor scissor(redraw);
         m.tintFaces[face].bind();
         const gl::ScopedPassState state(tintPass);
-        if (around) {  // the drawn alpha (attachment 1): 1 - the farthest depth, MIN
+        if (drawn) {  // the drawn alpha (attachment 1): 1 - the farthest depth, MIN
             glBlendEquationi(1, GL_MIN);
             glBlendFunci(1, GL_ONE, GL_ONE);
         }

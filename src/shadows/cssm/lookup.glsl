@@ -290,33 +290,17 @@ vec3 colouredByTiles(ShadowSite s, int side) {
     return mix(vec3(1.0), acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0), ts.own);
 }
 
-// Translucent receivers whose own layer is the farthest one at each of the 2 x 2 texels the tint
-// map blends around them (2D maps). The tint there is the receiver's own transmittance times that
-// of every layer in front of it, so dividing the own one out leaves the light that reaches the
-// receiver: the deterministic product opaque receivers behind every layer get (colouredByTint),
-// without counting texels. This is a closed solid's far side behind its near side, or a pane
-// behind another; there the texel counts erred besides, as a curved far side's own stochastic
-// writes stand in front of its tangent plane. Each texel's farthest layer (the tint pass's fp32
-// drawn alpha) must lie on the receiver's surface, extended along its plane to the texel centre:
-// within 2^-12 of its linear depth and a quarter texel's slope (the rasterised depth of a
-// tessellated surface). A texel where the receiver's layer is missing (its rim, as the light
-// sees it) or has a layer behind it fails, as does a channel the receiver stops almost wholly.
-bool ownLayerFarthest(ShadowSite s, out vec3 light) {
-    vec2 centre = floor(s.coord.xy * s.resolution - 0.5) + 1.0;  // between the 2 x 2 texels blended
-    vec4 farthest = shadowDrawnFarthestGather2D(s.slot, centre / s.resolution);
-    vec2 offset = centre - s.surface.xy * s.resolution;
-    const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
-    vec4 surface = s.surface.z + clamp((offset.x + dx) * s.depthSlope.x + (offset.y + dy) * s.depthSlope.y, -0.01, 0.01);
-    vec4 linearFarthest, linearSurface;
-    for (int i = 0; i < 4; ++i) {
-        linearFarthest[i] = linearShadowDepth(s.light, farthest[i]);
-        linearSurface[i] = linearShadowDepth(s.light, surface[i]);
-    }
-    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
-    float margin = linearSurface.y / 4096.0 + 0.25 * perTexel + 1e-7;
-    bool own = all(lessThan(abs(linearFarthest - linearSurface), vec4(margin)));
-    light = min(tintAround(s).rgb / max(receiverTransmittance, vec3(1.0 / 64.0)), vec3(1.0));
-    return own && all(greaterThanEqual(receiverTransmittance, vec3(1.0 / 64.0)));
+// Translucent receivers whose own layers are known at each of the 2 x 2 texels the tint map
+// blends around them (2D maps; ownLayersAt in shadow_filtering.glsl): the tint's products with
+// those divided out, weighed bilinearly, are the light that reaches them, the deterministic
+// product opaque receivers behind every layer get (colouredByTint), without counting texels. There
+// the texel counts erred besides, as a curved far side's own stochastic writes stand in front of
+// its tangent plane.
+bool decidedThroughOwnLayers(ShadowSite s, out vec3 light) {
+    vec2 texel = s.coord.xy * s.resolution, centre = floor(texel - 0.5) + 1.0;
+    bool known;
+    light = bilinearThroughOwnLayers(s, texel, centre, ownLayersAt(s, centre), known);
+    return known;
 }
 
 // Translucent receivers (the lighting program's MATERIAL_TRANSLUCENT build). Passes 0-3 read the
@@ -332,7 +316,7 @@ bool ownLayerFarthest(ShadowSite s, out vec3 light) {
 // 49 ms against 69 ms in the shared loop above; opaque ones would pay its empty pass everywhere.
 vec3 colouredByNearestLayer(ShadowSite s, int side) {
     vec3 throughOwn;
-    if (kTintBehindAll && !s.cube && ownLayerFarthest(s, throughOwn)) return throughOwn;
+    if (kTintBehindAll && !s.cube && decidedThroughOwnLayers(s, throughOwn)) return throughOwn;
     TileSite ts = tileSite(s, side);
     vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
     float covered = 0.0, farthest = 0.0, leastGap = 2.0, ownCovered = 0.0;

@@ -1,10 +1,17 @@
 // Hard shadow-map lookup (Williams 1978) with the translucent tint of Nápravník 2020.
-#include "src/shadows/common/glsl/shadow_coord.glsl"
-#include "src/shadows/common/glsl/shadow_samplers.glsl"
+#include "src/shadows/common/glsl/shadow_filtering.glsl"
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     int slot = lightShadowSlot(light);
     if (slot < 0) return vec3(1.0);
+#if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    // Translucent receivers under 2D lights take their own layer out of the tint (tintAt), which
+    // needs the receiver's plane: the site, with its derivatives, in this program only.
+    if (lightType(light) != kLightPoint) {
+        ShadowSite s = shadowSite(light, P, N, NdotL);
+        return s.inside ? compareAt(s, vec2(0.0), 0.0) * tintAt(s) : vec3(1.0);
+    }
+#endif
     ShadowCoord sc = shadowCoord(light, P, N, NdotL);
     if (!sc.inside) return vec3(1.0);
     if (lightType(light) == kLightPoint)

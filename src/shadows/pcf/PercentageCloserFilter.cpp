@@ -54,7 +54,11 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
 }
 
 std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
-    return {"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
+    std::vector<std::string> defines{"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
+    // The bilinear kernel filters the tint too (setFiltering): a translucent receiver divides its
+    // own layer out only where it is the farthest at all 2 x 2 texels blended (tintAt).
+    if (kernel_ == Kernel::Bilinear) defines.emplace_back("SHADOW_TINT_LINEAR 1");
+    return defines;
 }
 
 // How far, along x or y, the kernel's taps reach in units of its radius: tapsAgree() bounds the

@@ -112,16 +112,107 @@ float rawDepthAt(ShadowSite s, vec2 texels) {
     return shadowRawLod2D(s.slot, s.coord.xy + texels / s.resolution).r;
 }
 
-// The translucent tint behind the nearest translucent layer (the colour map of Nápravník 2020).
-vec3 tintAt(ShadowSite s) {
-    return s.cube ? shadowTintBehindCube(s.slot, s.coord, s.depth) : shadowTintBehind2D(s.slot, s.coord.xy, s.depth);
-}
-
 // Linear depth in [0, 1] between the light's near and far planes, from window depth.
 float linearShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
     if (!lightPerspective(light)) return windowDepth;
     return perspectiveLinearDepth(windowDepth, L.positionNear.w, L.directionFar.w);
+}
+
+// Translucent receivers under 2D lights: per texel of the 2 x 2 around `centre` (in texels,
+// between them; gather order), how many of the receiver's own layers the tint there holds, where
+// every other layer there lies in front of the receiver; dividing them out of the tint
+// (throughOwnLayers) leaves the light that reaches the receiver:
+//  0: every layer at the texel lies in front of the receiver (beyond its rim, as the light sees
+//     it): the product as it is;
+//  1: the texel's farthest layer is the receiver's own surface: a pane behind another, a solid's
+//     far side behind its near side;
+//  2: the receiver is where light enters a closed part (uClosedPart), no entry lies behind it at
+//     the texel, but a layer does: the face the light leaves that solid by, of the same material
+//     (solids that neither nest nor intersect): a glass block's lit face behind a pane;
+// -1: not known (a layer behind the receiver that is not its own).
+// The farthest layer and entry are the tint pass's fp32 drawn alpha (DepthAndTintMaps); "is the
+// receiver" means on its surface, extended along its plane to the texel centre: within 2^-12 of
+// its linear depth and a quarter texel's slope (the rasterised depth of a tessellated surface).
+vec4 ownLayersAt(ShadowSite s, vec2 centre) {
+    vec2 uv = centre / s.resolution;
+    vec4 farthest = shadowDrawnFarthestGather2D(s.slot, uv), entry = shadowDrawnEntryGather2D(s.slot, uv);
+    vec2 offset = centre - s.surface.xy * s.resolution;
+    const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
+    vec4 surface = s.surface.z + clamp((offset.x + dx) * s.depthSlope.x + (offset.y + dy) * s.depthSlope.y, -0.01, 0.01);
+    vec4 linearFarthest, linearEntry, linearSurface;
+    for (int i = 0; i < 4; ++i) {
+        linearFarthest[i] = linearShadowDepth(s.light, farthest[i]);
+        linearEntry[i] = linearShadowDepth(s.light, entry[i]);
+        linearSurface[i] = linearShadowDepth(s.light, surface[i]);
+    }
+    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
+    vec4 margin = vec4(linearSurface.y / 4096.0 + 0.25 * perTexel + 1e-7);
+    bvec4 last = lessThan(abs(linearFarthest - linearSurface), margin), lastEntry = lessThan(abs(linearEntry - linearSurface), margin);
+    bvec4 allInFront = lessThan(linearFarthest, linearSurface - margin);
+    // The farthest layer is the farthest entry itself where both channels hold the same fragment's
+    // depth: the receiver alone (a closed part whose exit an opaque surface hides, or an open one).
+    // Where it differs, an exit lies behind, by any distance: the own one of a closed part (also
+    // by its rim, where the light leaves through a side a hair behind the lit face).
+    vec4 behindEntry = mix(vec4(uClosedPart != 0 ? 2.0 : -1.0), vec4(1.0), equal(farthest, entry));
+    return mix(mix(mix(vec4(-1.0), vec4(0.0), allInFront), vec4(1.0), last), behindEntry, lastEntry);
+}
+// Whether the receiver's `layers` own layers are known and let enough of each channel through to
+// divide by (a channel they stop almost wholly would magnify the tint's rounding), and the light
+// through its own layers' tint with them divided out.
+vec3 ownTransmittance(float layers) {
+    return layers > 1.5 ? receiverTransmittance * receiverTransmittance : layers > 0.5 ? receiverTransmittance : vec3(1.0);
+}
+bool ownLayersDividable(float layers) { return layers >= 0.0 && all(greaterThanEqual(ownTransmittance(layers), vec3(1.0 / 1024.0))); }
+vec3 throughOwnLayers(vec3 tint, float layers) { return min(tint / max(ownTransmittance(layers), vec3(1.0 / 1024.0)), vec3(1.0)); }
+
+// The 2 x 2 tint texels around `centre` weighed bilinearly at `texel` (both in texels), each
+// texel's product with the receiver's own layers (`own`, ownLayersAt) divided out, so that a
+// receiver's rim, where texels with and without its own layer meet, is exact too. `known` is
+// false where a texel's layers are not known; that texel then gives its product where the
+// receiver is behind its nearest layer (tint alpha, NearestLayer), else 1.
+vec3 bilinearThroughOwnLayers(ShadowSite s, vec2 texel, vec2 centre, vec4 own, out bool known) {
+    mat4 tint = shadowTintGather2D(s.slot, centre / s.resolution);
+    vec2 f = texel - (centre - 0.5);  // the upper texels' weights in x, y
+    vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // gather order
+    vec3 sum = vec3(0.0);
+    known = true;
+    for (int i = 0; i < 4; ++i) {
+        vec3 product = vec3(tint[0][i], tint[1][i], tint[2][i]);
+        bool divide = ownLayersDividable(own[i]);
+        known = known && divide;
+        sum += weights[i] * (divide ? throughOwnLayers(product, own[i]) : 1.0 - s.depth < tint[3][i] ? product : vec3(1.0));
+    }
+    return sum;
+}
+
+// The plain tint (NearestLayer) for a translucent receiver: the product with its own layers
+// divided out where ownLayersAt knows them, at the texel the tint is read from (nearest
+// filtering) or at each of the 2 x 2 (SHADOW_TINT_LINEAR, pcf-bilinear). Elsewhere (an unknown
+// layer behind the receiver) the product of every layer behind whose nearest the receiver lies,
+// as before: the deterministic map cannot tell which layers lie in front. Measured on the glass
+// scene (compare --translucent-receivers): see the README's glass paragraph.
+vec3 tintThroughOwnLayers2D(ShadowSite s) {
+    vec2 texel = s.coord.xy * s.resolution, centre = floor(texel - 0.5) + 1.0;
+    vec4 own = ownLayersAt(s, centre);
+#ifdef SHADOW_TINT_LINEAR
+    bool known;
+    return bilinearThroughOwnLayers(s, texel, centre, own, known);
+#else
+    vec4 tint = shadowTint2D(s.slot, s.coord.xy);
+    bvec2 upper = greaterThanEqual(floor(texel), centre);  // the texel read is the gather's upper one in x, y
+    float layers = upper.y ? (upper.x ? own.y : own.x) : (upper.x ? own.z : own.w);
+    if (ownLayersDividable(layers)) return throughOwnLayers(tint.rgb, layers);
+    return 1.0 - s.depth < tint.a ? tint.rgb : vec3(1.0);  // behind the nearest layer, or in front of it
+#endif
+}
+
+// The translucent tint behind the nearest translucent layer (the colour map of Nápravník 2020).
+vec3 tintAt(ShadowSite s) {
+#if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    if (!s.cube) return tintThroughOwnLayers2D(s);
+#endif
+    return s.cube ? shadowTintBehindCube(s.slot, s.coord, s.depth) : shadowTintBehind2D(s.slot, s.coord.xy, s.depth);
 }
 
 // World distance along the light's axis, from window depth.

@@ -11,7 +11,7 @@ layout(binding = kUnitRaw2D) uniform sampler2D uShadowRaw[kMaxShadow2D];
 layout(binding = kUnitShadowCube) uniform samplerCubeShadow uShadowCube[kMaxShadowCube];
 layout(binding = kUnitTintCube) uniform samplerCube uShadowTintCube[kMaxShadowCube];
 layout(binding = kUnitRawCube) uniform samplerCube uShadowRawCube[kMaxShadowCube];
-// 1 - the farthest translucent layer's depth per texel (DepthAndTintMaps::TintAlpha::FarthestAround).
+// 1 - the farthest translucent layer's depth per texel, and the farthest entry's (DepthAndTintMaps::LightMaps::drawnAlpha).
 layout(binding = kUnitDrawnFarthest2D) uniform sampler2D uShadowDrawn[kMaxShadow2D];
 
 #define SLOT_SWITCH_4(EXPR) \
@@ -31,6 +31,13 @@ float shadowCompareCube(int slot, vec3 dir, float depth) {
 }
 vec4 shadowTint2D(int slot, vec2 uv) {
 #define S(i) textureLod(uShadowTint[i], uv, 0.0)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+// The 2 x 2 tint texels around uv unfiltered: columns r, g, b, a, each in gather order.
+mat4 shadowTintGather2D(int slot, vec2 uv) {
+#define S(i) mat4(textureGather(uShadowTint[i], uv, 0), textureGather(uShadowTint[i], uv, 1), \
+                  textureGather(uShadowTint[i], uv, 2), textureGather(uShadowTint[i], uv, 3))
     SLOT_SWITCH_4(S)
 #undef S
 }
@@ -80,9 +87,15 @@ vec4 shadowRawGatherAlpha2D(int slot, vec2 uv) {
     SLOT_SWITCH_4(S)
 #undef S
 }
-// The farthest translucent layer's window depth at the 2 x 2 texels around uv (gather order).
+// The window depth of the farthest translucent layer, and of the farthest entry into a solid
+// (transmit.frag), at the 2 x 2 texels around uv (gather order).
 vec4 shadowDrawnFarthestGather2D(int slot, vec2 uv) {
 #define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 0))
+    SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowDrawnEntryGather2D(int slot, vec2 uv) {
+#define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 1))
     SLOT_SWITCH_4(S)
 #undef S
 }

@@ -6,12 +6,15 @@
 // farthest layer's (FarthestAround).
 #include "shaders/common/material.glsl"
 in vec2 vUv;
-// With FarthestAround the second output (R32F, MIN) keeps 1 - the farthest depth per texel in
-// full precision, where the bound is made from and CSSM's translucent receivers read it.
+// The second output (RG32F, MIN), where the map has one, keeps per texel in full precision
+// 1 - the farthest layer's depth (r) and 1 - the farthest entry's (g): a face of a closed part
+// (uClosedPart) facing the light, where light enters a solid, or any face of an open surface.
+// Translucent receivers read both (ownLayerFarthest); FarthestAround's bound is made from r.
 layout(location = 0) out vec4 outTransmit;
-layout(location = 1) out float outDrawn;
+layout(location = 1) out vec2 outDrawn;
 void main() {
     float coverage = materialCoverage(materialTexel(vUv));
-    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), 1.0 - gl_FragCoord.z);
-    outDrawn = 1.0 - gl_FragCoord.z;
+    float drawn = 1.0 - gl_FragCoord.z;
+    outTransmit = vec4(vec3(1.0) - materialStopped(coverage), drawn);
+    outDrawn = vec2(drawn, uClosedPart == 0 || gl_FrontFacing ? drawn : 1.0);
 }

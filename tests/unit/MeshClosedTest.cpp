@@ -1,0 +1,55 @@
+// Mesh::partIsClosed: whether a part bounds a solid, which tells translucent receivers that light
+// entering it leaves it through one more face of the same material (tintThroughOwnLayers2D).
+#include "scene/Mesh.h"
+#include "scene/Shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace penumbra::scene {
+namespace {
+
+TEST(MeshClosed, BoxesAndSpheresBoundSolidsAndAPlaneDoesNot) {
+    // The box repeats each corner on three faces, the sphere its seam and poles (with degenerate
+    // triangles there): welding by position must see through both.
+    EXPECT_TRUE(shapes::box({1.0f, 2.0f, 0.04f}).partIsClosed(0));
+    EXPECT_TRUE(shapes::sphere(0.45f).partIsClosed(0));
+    EXPECT_FALSE(shapes::plane(2.0f, 2.0f).partIsClosed(0));
+    EXPECT_FALSE(shapes::box({1.0f, 1.0f, 1.0f}).partIsClosed(1)) << "no such part";
+}
+
+TEST(MeshClosed, AHoleOrAnInwardWindingIsNotASolid) {
+    Mesh holed = shapes::box({1.0f, 1.0f, 1.0f});
+    holed.indices.resize(holed.indices.size() - 3);  // one triangle of the last face gone
+    holed.parts[0].indexCount -= 3;
+    EXPECT_FALSE(holed.partIsClosed(0));
+
+    Mesh inward = shapes::sphere(1.0f, 16, 8);
+    for (std::size_t t = 0; t + 2 < inward.indices.size(); t += 3) std::swap(inward.indices[t + 1], inward.indices[t + 2]);
+    EXPECT_FALSE(inward.partIsClosed(0)) << "wound clockwise seen from outside: negative volume";
+
+    Mesh flipped = shapes::box({1.0f, 1.0f, 1.0f});
+    std::swap(flipped.indices[1], flipped.indices[2]);  // one triangle against its neighbours
+    EXPECT_FALSE(flipped.partIsClosed(0));
+}
+
+TEST(MeshClosed, EachPartIsJudgedByItsOwnTriangles) {
+    // Two boxes in one mesh, the second a part of its own: each part closed; one part holding
+    // half of each box is not.
+    Mesh a = shapes::box({1.0f, 1.0f, 1.0f}), b = shapes::box({0.5f, 0.5f, 0.5f});
+    const auto offset = static_cast<std::uint32_t>(a.vertices.size()), firstB = static_cast<std::uint32_t>(a.indices.size());
+    for (Vertex v : b.vertices) {
+        v.position += glm::vec3(3.0f, 0.0f, 0.0f);
+        a.vertices.push_back(v);
+    }
+    for (std::uint32_t i : b.indices) a.indices.push_back(i + offset);
+    a.parts = {MeshPart{0, firstB, 0}, MeshPart{firstB, static_cast<std::uint32_t>(b.indices.size()), 0}};
+    EXPECT_TRUE(a.partIsClosed(0));
+    EXPECT_TRUE(a.partIsClosed(1));
+    a.parts = {MeshPart{firstB / 2, firstB, 0}};
+    EXPECT_FALSE(a.partIsClosed(0));
+}
+
+}  // namespace
+}  // namespace penumbra::scene
