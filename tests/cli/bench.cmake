@@ -64,10 +64,11 @@ foreach(i RANGE ${last})
   if(product LESS 990000000 OR product GREATER 1010000000)
     message(FATAL_ERROR "${what}: FPS ${fpsMean} does not match the mean frame time ${frameMean} ms")
   endif()
-  # Memory: the texel bytes of the maps. hard: one spot light, DEPTH32F + RGBA16F tint at res^2
-  # (the scene has a translucent caster); none: nothing; floor-depth: one DEPTH32F map.
+  # Memory: the texel bytes of the maps. hard: one spot light, DEPTH32F + RGBA16F tint + RG32F
+  # drawn alpha at res^2 (the scene has a translucent caster); none: nothing; floor-depth: one
+  # DEPTH32F map.
   if(technique STREQUAL "hard")
-    math(EXPR expected "${res} * ${res} * (4 + 8)")
+    math(EXPR expected "${res} * ${res} * (4 + 8 + 8)")
   elseif(technique STREQUAL "none")
     set(expected 0)
   else()
