@@ -134,19 +134,37 @@ float linearShadowDepth(int light, float windowDepth) {
 // The farthest layer and entry are the tint pass's fp32 drawn alpha (DepthAndTintMaps); "is the
 // receiver" means on its surface, extended along its plane to the texel centre: within 2^-12 of
 // its linear depth and a quarter texel's slope (the rasterised depth of a tessellated surface).
+vec4 ownLayersFrom(ShadowSite s, vec4 farthest, vec4 entry, vec4 linearSurface, float perTexel);
+
 vec4 ownLayersAt(ShadowSite s, vec2 centre) {
     vec2 uv = centre / s.resolution;
-    vec4 farthest = shadowDrawnFarthestGather2D(s.slot, uv), entry = shadowDrawnEntryGather2D(s.slot, uv);
     vec2 offset = centre - s.surface.xy * s.resolution;
     const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
     vec4 surface = s.surface.z + clamp((offset.x + dx) * s.depthSlope.x + (offset.y + dy) * s.depthSlope.y, -0.01, 0.01);
-    vec4 linearFarthest, linearEntry, linearSurface;
+    vec4 linearSurface;
+    for (int i = 0; i < 4; ++i) linearSurface[i] = linearShadowDepth(s.light, surface[i]);
+    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
+    return ownLayersFrom(s, shadowDrawnFarthestGather2D(s.slot, uv), shadowDrawnEntryGather2D(s.slot, uv), linearSurface, perTexel);
+}
+// The same for the one texel around `texel` (nearest filtering): one fetch where the 2 x 2 take two
+// gathers. Measured on llvmpipe, glass scene, hard's translucent pass: 13.8 ms against 17.0 ms with
+// the 2 x 2 (9.9 ms with no division; the receiver plane's derivatives are 1.6 ms of the rest).
+float ownLayersAtTexel(ShadowSite s, vec2 texel) {
+    vec2 drawn = shadowDrawnFetch2D(s.slot, ivec2(texel));
+    float surface = s.surface.z + clamp(dot(floor(texel) + 0.5 - s.surface.xy * s.resolution, s.depthSlope), -0.01, 0.01);
+    float linearSurface = linearShadowDepth(s.light, surface);
+    float perTexel = abs(linearShadowDepth(s.light, surface + s.depthSlope.x) - linearSurface) +
+                     abs(linearShadowDepth(s.light, surface + s.depthSlope.y) - linearSurface);
+    return ownLayersFrom(s, drawn.xxxx, drawn.yyyy, vec4(linearSurface), perTexel).x;
+}
+// ownLayersAt's answer from the farthest layers' and entries' window depths, the receiver's linear
+// depth at each texel centre and its change per texel.
+vec4 ownLayersFrom(ShadowSite s, vec4 farthest, vec4 entry, vec4 linearSurface, float perTexel) {
+    vec4 linearFarthest, linearEntry;
     for (int i = 0; i < 4; ++i) {
         linearFarthest[i] = linearShadowDepth(s.light, farthest[i]);
         linearEntry[i] = linearShadowDepth(s.light, entry[i]);
-        linearSurface[i] = linearShadowDepth(s.light, surface[i]);
     }
-    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
     vec4 margin = vec4(linearSurface.y / 4096.0 + 0.25 * perTexel + 1e-7);
     bvec4 last = lessThan(abs(linearFarthest - linearSurface), margin), lastEntry = lessThan(abs(linearEntry - linearSurface), margin);
     bvec4 allInFront = lessThan(linearFarthest, linearSurface - margin);
@@ -193,15 +211,14 @@ vec3 bilinearThroughOwnLayers(ShadowSite s, vec2 texel, vec2 centre, vec4 own, o
 // as before: the deterministic map cannot tell which layers lie in front. Measured on the glass
 // scene (compare --translucent-receivers): see the README's glass paragraph.
 vec3 tintThroughOwnLayers2D(ShadowSite s) {
-    vec2 texel = s.coord.xy * s.resolution, centre = floor(texel - 0.5) + 1.0;
-    vec4 own = ownLayersAt(s, centre);
+    vec2 texel = s.coord.xy * s.resolution;
 #ifdef SHADOW_TINT_LINEAR
+    vec2 centre = floor(texel - 0.5) + 1.0;
     bool known;
-    return bilinearThroughOwnLayers(s, texel, centre, own, known);
+    return bilinearThroughOwnLayers(s, texel, centre, ownLayersAt(s, centre), known);
 #else
     vec4 tint = shadowTint2D(s.slot, s.coord.xy);
-    bvec2 upper = greaterThanEqual(floor(texel), centre);  // the texel read is the gather's upper one in x, y
-    float layers = upper.y ? (upper.x ? own.y : own.x) : (upper.x ? own.z : own.w);
+    float layers = ownLayersAtTexel(s, texel);
     if (ownLayersDividable(layers)) return throughOwnLayers(tint.rgb, layers);
     return 1.0 - s.depth < tint.a ? tint.rgb : vec3(1.0);  // behind the nearest layer, or in front of it
 #endif

@@ -94,6 +94,11 @@ vec4 shadowDrawnFarthestGather2D(int slot, vec2 uv) {
     SLOT_SWITCH_4(S)
 #undef S
 }
+vec2 shadowDrawnFetch2D(int slot, ivec2 texel) {  // one texel: (farthest layer, farthest entry)
+#define S(i) (vec2(1.0) - texelFetch(uShadowDrawn[i], texel, 0).rg)
+    SLOT_SWITCH_4(S)
+#undef S
+}
 vec4 shadowDrawnEntryGather2D(int slot, vec2 uv) {
 #define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 1))
     SLOT_SWITCH_4(S)
