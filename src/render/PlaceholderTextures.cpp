@@ -42,6 +42,7 @@ void PlaceholderTextures::bindAll() const {
         depthCube_.bind(static_cast<GLuint>(gpu::kUnitShadowCube + slot));
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitTintCube + slot));
         whiteCube_.bind(static_cast<GLuint>(gpu::kUnitRawCube + slot));
+        whiteCube_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthestCube + slot));
     }
     depthArray_.bind(gpu::kUnitLayered);
     whiteArray_.bind(gpu::kUnitScreenShadow);

@@ -32,5 +32,8 @@ int ShadowSlots::tintUnit(std::size_t light) const {
 int ShadowSlots::rawUnit(std::size_t light) const {
     return (cube[light] ? gpu::kUnitRawCube : gpu::kUnitRaw2D) + slot[light];
 }
+int ShadowSlots::drawnUnit(std::size_t light) const {
+    return (cube[light] ? gpu::kUnitDrawnFarthestCube : gpu::kUnitDrawnFarthest2D) + slot[light];
+}
 
 }  // namespace penumbra::shadows

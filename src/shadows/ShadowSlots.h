@@ -24,6 +24,7 @@ struct ShadowSlots {
     int depthUnit(std::size_t light) const;  // depth with hardware compare
     int tintUnit(std::size_t light) const;   // transmittance of translucent casters
     int rawUnit(std::size_t light) const;    // raw depth, or a technique's own map in its place
+    int drawnUnit(std::size_t light) const;  // the farthest translucent layer and entry (DepthAndTintMaps)
 };
 
 }  // namespace penumbra::shadows

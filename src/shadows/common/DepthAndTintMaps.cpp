@@ -21,6 +21,9 @@ void attachFace(gl::Framebuffer& fb, GLenum attachment, const gl::Texture& map, 
     else fb.attach(attachment, map);
 }
 
+// The drawn alpha of one face: a view of a cube map's face, or the 2D map.
+const gl::Texture& drawnFace(const DepthAndTintMaps::LightMaps& m, std::size_t face) { return m.cube ? m.drawnFaceViews[face] : m.drawn; }
+
 // One depth-only framebuffer per face of `map`.
 std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, const std::string& label) {
     std::vector<gl::Framebuffer> faces;
@@ -91,21 +94,23 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
 }
 
 bool DepthAndTintMaps::ensureDrawn(LightMaps& m) {
+    if (m.drawn.id() != 0) return false;
     const bool around = tintAlpha_ == TintAlpha::FarthestAround;
-    if (!m.drawnAlpha.empty() || (m.cube && !around)) return false;  // point lights' lookups have no units for it
     if (around && !farthestAround_.id()) {
         farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
                                               .fragment = "src/shadows/common/glsl/farthest_around.frag"});
     }
     const int res = m.resolution;
     const float noLayer[2] = {1.0f, 1.0f};  // 1 - the farthest depths where no layer is
+    // Full precision: translucent receivers tell their own layer from one just behind it by these
+    // depths; half floats of 1 - depth would blur that to 2^-9 of the distance from the far plane
+    // (8 cm in a 40 m sun box). A cube map's faces are views of it (bound and drawn per face).
+    m.drawn = mapTexture(GL_RG32F, res, m.cube);
+    m.drawn.setFilter(GL_NEAREST, GL_NEAREST);  // point lights' lookups read the texel a direction selects
+    glClearTexImage(m.drawn.id(), 0, GL_RG, GL_FLOAT, noLayer);
     for (int f = 0; f < (m.cube ? 6 : 1); ++f) {
-        // Full precision: translucent receivers tell their own layer from one just behind it by
-        // these depths; half floats of 1 - depth would blur that to 2^-9 of the distance from the
-        // far plane (8 cm in a 40 m sun box).
-        m.drawnAlpha.push_back(gl::Texture::create2D(GL_RG32F, res, res));
-        glClearTexImage(m.drawnAlpha.back().id(), 0, GL_RG, GL_FLOAT, noLayer);
-        m.tintFaces[f].attach(GL_COLOR_ATTACHMENT1, m.drawnAlpha.back());
+        if (m.cube) m.drawnFaceViews.push_back(gl::Texture::view2D(m.drawn, GL_RG32F, f));
+        m.tintFaces[f].attach(GL_COLOR_ATTACHMENT1, drawnFace(m, f));
         m.tintFaces[f].setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
         m.tintFaces[f].checkComplete("shadow tint map with drawn alpha " + std::to_string(res));
         if (!around) continue;
@@ -123,7 +128,7 @@ void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const
     m.boundTargets[face].bind();
     farthestAround_.use();
     farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
-    m.drawnAlpha[face].bind(0);
+    drawnFace(m, face).bind(0);
     rawSampler_.bind(0);  // nearest, clamped to the edge
     glDrawArrays(GL_TRIANGLES, 0, 3);
     gl::Sampler::unbind(0);
@@ -263,7 +268,7 @@ bool DepthAndTintMaps::keepTranslucent(LightMaps& m, std::size_t face, std::uint
 
 void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::size_t face, const CasterSelection* translucent,
                                   const TexelRect& redraw) {
-    const bool around = tintAlpha_ == TintAlpha::FarthestAround, drawn = face < m.drawnAlpha.size();
+    const bool around = tintAlpha_ == TintAlpha::FarthestAround, drawn = m.drawn.id() != 0;
     clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f, 1.0f, 1.0f, around ? 1.0f : 0.0f));  // alpha: no layer
     if (drawn) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
     if (translucent) {
@@ -291,8 +296,7 @@ void DepthAndTintMaps::bind(bool rawDepth) const {
         const auto raw = static_cast<GLuint>(slots_.rawUnit(i));
         maps_[i].depth.bind(static_cast<GLuint>(slots_.depthUnit(i)));
         maps_[i].tint.bind(static_cast<GLuint>(slots_.tintUnit(i)));
-        if (!maps_[i].cube && !maps_[i].drawnAlpha.empty())
-            maps_[i].drawnAlpha[0].bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slots_.slot[i]));
+        if (maps_[i].drawn.id() != 0) maps_[i].drawn.bind(static_cast<GLuint>(slots_.drawnUnit(i)));
         if (rawDepth) {
             maps_[i].depth.bind(raw);
             rawSampler_.bind(raw);
@@ -306,7 +310,7 @@ std::size_t DepthAndTintMaps::memoryBytes() const {
     std::size_t total = 0;
     for (const auto& m : maps_) {
         total += m.depth.memoryBytes() + m.tint.memoryBytes() + m.still.memoryBytes();
-        for (const auto& a : m.drawnAlpha) total += a.memoryBytes();
+        total += m.drawn.memoryBytes();
     }
     return total;
 }

@@ -59,17 +59,18 @@ public:
         std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
         std::vector<gl::Framebuffer> stillFaces;
-        // Per face, the drawn alpha (RG32F: 1 - the farthest layer's depth per texel, 1 - the
-        // farthest entry's, transmit.frag), which the tint pass writes as its second target
-        // (tintFaces' attachment 1): translucent receivers
-        // under 2D lights read it (bind(), at gpu::kUnitDrawnFarthest2D + slot) to divide their
-        // own layer out of the tint; under FarthestAround the bound of any texel's neighbours is
-        // made from it again when part of the tint is redrawn (boundTargets write the bound into
-        // the tint's face alone). Made with the map under FarthestAround; under NearestLayer for
-        // 2D maps in scenes with translucent casters (ShadowFrame::translucentCasters; without,
-        // the plain techniques' maps go without its 8 bytes per texel).
+        // The drawn alpha (RG32F: 1 - the farthest layer's depth per texel, 1 - the farthest
+        // entry's, transmit.frag), which the tint pass writes as its second target (tintFaces'
+        // attachment 1; a cube map's faces through drawnFaceViews): translucent receivers read it
+        // (bind(), at ShadowSlots::drawnUnit) to divide their own layers out of the tint; under
+        // FarthestAround the bound of any texel's neighbours is made from it again when part of
+        // the tint is redrawn (boundTargets write the bound into the tint's face alone). Made with
+        // the map under FarthestAround; under NearestLayer in scenes with translucent casters
+        // (ShadowFrame::translucentCasters; without, the plain techniques' maps go without its 8
+        // bytes per texel).
+        gl::Texture drawn;
+        std::vector<gl::Texture> drawnFaceViews;
         std::vector<gl::Texture> tintFaceViews;
-        std::vector<gl::Texture> drawnAlpha;
         std::vector<gl::Framebuffer> boundTargets;
     };
 
@@ -116,7 +117,7 @@ public:
 private:
     void ensure(std::size_t light, int resolution, bool cube);
     void ensureStill(LightMaps& maps);
-    bool ensureDrawn(LightMaps& maps);  // allocates LightMaps::drawnAlpha, cleared to "no layer"; true if it did
+    bool ensureDrawn(LightMaps& maps);  // allocates LightMaps::drawn, cleared to "no layer"; true if it did
     // Where a face's opaque depth is needed: the clip space casters are culled against (the
     // light's, or that cropped to `texels`) and, when `cropped`, the texels drawn and cleared.
     struct OpaqueRegion {

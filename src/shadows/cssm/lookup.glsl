@@ -291,15 +291,14 @@ vec3 colouredByTiles(ShadowSite s, int side) {
 }
 
 // Translucent receivers whose own layers are known at each of the 2 x 2 texels the tint map
-// blends around them (2D maps; ownLayersAt in shadow_filtering.glsl): the tint's products with
+// blends around them (ownLayersFrom in shadow_filtering.glsl): the tint's products with
 // those divided out, weighed bilinearly, are the light that reaches them, the deterministic
 // product opaque receivers behind every layer get (colouredByTint), without counting texels. There
 // the texel counts erred besides, as a curved far side's own stochastic writes stand in front of
 // its tangent plane.
 bool decidedThroughOwnLayers(ShadowSite s, out vec3 light) {
-    vec2 texel = s.coord.xy * s.resolution, centre = floor(texel - 0.5) + 1.0;
     bool known;
-    light = bilinearThroughOwnLayers(s, texel, centre, ownLayersAt(s, centre), known);
+    light = bilinearThroughOwnLayers(s, known);
     return known;
 }
 
@@ -316,7 +315,7 @@ bool decidedThroughOwnLayers(ShadowSite s, out vec3 light) {
 // 49 ms against 69 ms in the shared loop above; opaque ones would pay its empty pass everywhere.
 vec3 colouredByNearestLayer(ShadowSite s, int side) {
     vec3 throughOwn;
-    if (kTintBehindAll && !s.cube && decidedThroughOwnLayers(s, throughOwn)) return throughOwn;
+    if (kTintBehindAll && decidedThroughOwnLayers(s, throughOwn)) return throughOwn;
     TileSite ts = tileSite(s, side);
     vec3 passing = vec3(0.0), passingNearest = vec3(0.0);
     float covered = 0.0, farthest = 0.0, leastGap = 2.0, ownCovered = 0.0;

@@ -11,7 +11,7 @@ struct ShadowSite {
     bool inside;
     vec3 coord;      // 2D: (u, v, reference depth); cube: direction from the light
     float depth;     // reference depth (window space), bias applied
-    vec3 surface;    // 2D: the receiver point itself, no bias nor normal offset: (u, v, window depth)
+    vec3 surface;    // the receiver point itself, no bias nor normal offset: 2D (u, v, window depth); cube: relative to the light
     vec3 tangent, bitangent;  // cube: one texel step in direction space
     float texelWorld;         // world size of one texel at the receiver
     float resolution;         // texels across the map
@@ -35,7 +35,7 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     s.coord = s.cube ? sc.uv : vec3(sc.uv.xy, sc.depth);
     s.depth = sc.depth;
     vec4 surface = L.shadowMatrix * vec4(P, 1.0);  // folds away in lookups that never read it
-    s.surface = surface.xyz / surface.w;
+    s.surface = s.cube ? P - L.positionNear.xyz : surface.xyz / surface.w;
     s.texelWorld = shadowTexelWorldSize(light, P);
     float res = L.misc.y;
     s.resolution = res;
@@ -119,10 +119,9 @@ float linearShadowDepth(int light, float windowDepth) {
     return perspectiveLinearDepth(windowDepth, L.positionNear.w, L.directionFar.w);
 }
 
-// Translucent receivers under 2D lights: per texel of the 2 x 2 around `centre` (in texels,
-// between them; gather order), how many of the receiver's own layers the tint there holds, where
-// every other layer there lies in front of the receiver; dividing them out of the tint
-// (throughOwnLayers) leaves the light that reaches the receiver:
+// Translucent receivers: per texel of the tint map, how many of the receiver's own layers the tint
+// there holds, where every other layer there lies in front of the receiver; dividing them out of
+// the tint (throughOwnLayers) leaves the light that reaches the receiver:
 //  0: every layer at the texel lies in front of the receiver (beyond its rim, as the light sees
 //     it): the product as it is;
 //  1: the texel's farthest layer is the receiver's own surface: a pane behind another, a solid's
@@ -134,31 +133,8 @@ float linearShadowDepth(int light, float windowDepth) {
 // The farthest layer and entry are the tint pass's fp32 drawn alpha (DepthAndTintMaps); "is the
 // receiver" means on its surface, extended along its plane to the texel centre: within 2^-12 of
 // its linear depth and a quarter texel's slope (the rasterised depth of a tessellated surface).
-vec4 ownLayersFrom(ShadowSite s, vec4 farthest, vec4 entry, vec4 linearSurface, float perTexel);
-
-vec4 ownLayersAt(ShadowSite s, vec2 centre) {
-    vec2 uv = centre / s.resolution;
-    vec2 offset = centre - s.surface.xy * s.resolution;
-    const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
-    vec4 surface = s.surface.z + clamp((offset.x + dx) * s.depthSlope.x + (offset.y + dy) * s.depthSlope.y, -0.01, 0.01);
-    vec4 linearSurface;
-    for (int i = 0; i < 4; ++i) linearSurface[i] = linearShadowDepth(s.light, surface[i]);
-    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
-    return ownLayersFrom(s, shadowDrawnFarthestGather2D(s.slot, uv), shadowDrawnEntryGather2D(s.slot, uv), linearSurface, perTexel);
-}
-// The same for the one texel around `texel` (nearest filtering): one fetch where the 2 x 2 take two
-// gathers. Measured on llvmpipe, glass scene, hard's translucent pass: 13.8 ms against 17.0 ms with
-// the 2 x 2 (9.9 ms with no division; the receiver plane's derivatives are 1.6 ms of the rest).
-float ownLayersAtTexel(ShadowSite s, vec2 texel) {
-    vec2 drawn = shadowDrawnFetch2D(s.slot, ivec2(texel));
-    float surface = s.surface.z + clamp(dot(floor(texel) + 0.5 - s.surface.xy * s.resolution, s.depthSlope), -0.01, 0.01);
-    float linearSurface = linearShadowDepth(s.light, surface);
-    float perTexel = abs(linearShadowDepth(s.light, surface + s.depthSlope.x) - linearSurface) +
-                     abs(linearShadowDepth(s.light, surface + s.depthSlope.y) - linearSurface);
-    return ownLayersFrom(s, drawn.xxxx, drawn.yyyy, vec4(linearSurface), perTexel).x;
-}
-// ownLayersAt's answer from the farthest layers' and entries' window depths, the receiver's linear
-// depth at each texel centre and its change per texel.
+// From the farthest layers' and entries' window depths, the receiver's linear depth at each texel
+// centre and its change per texel:
 vec4 ownLayersFrom(ShadowSite s, vec4 farthest, vec4 entry, vec4 linearSurface, float perTexel) {
     vec4 linearFarthest, linearEntry;
     for (int i = 0; i < 4; ++i) {
@@ -175,6 +151,7 @@ vec4 ownLayersFrom(ShadowSite s, vec4 farthest, vec4 entry, vec4 linearSurface, 
     vec4 behindEntry = mix(vec4(uClosedPart != 0 ? 2.0 : -1.0), vec4(1.0), equal(farthest, entry));
     return mix(mix(mix(vec4(-1.0), vec4(0.0), allInFront), vec4(1.0), last), behindEntry, lastEntry);
 }
+
 // Whether the receiver's `layers` own layers are known and let enough of each channel through to
 // divide by (a channel they stop almost wholly would magnify the tint's rounding), and the light
 // through its own layers' tint with them divided out.
@@ -184,13 +161,45 @@ vec3 ownTransmittance(float layers) {
 bool ownLayersDividable(float layers) { return layers >= 0.0 && all(greaterThanEqual(ownTransmittance(layers), vec3(1.0 / 1024.0))); }
 vec3 throughOwnLayers(vec3 tint, float layers) { return min(tint / max(ownTransmittance(layers), vec3(1.0 / 1024.0)), vec3(1.0)); }
 
-// The 2 x 2 tint texels around `centre` weighed bilinearly at `texel` (both in texels), each
-// texel's product with the receiver's own layers (`own`, ownLayersAt) divided out, so that a
-// receiver's rim, where texels with and without its own layer meet, is exact too. `known` is
-// false where a texel's layers are not known; that texel then gives its product where the
-// receiver is behind its nearest layer (tint alpha, NearestLayer), else 1.
-vec3 bilinearThroughOwnLayers(ShadowSite s, vec2 texel, vec2 centre, vec4 own, out bool known) {
-    mat4 tint = shadowTintGather2D(s.slot, centre / s.resolution);
+// Point lights: the window depth of the receiver's own plane (through the unbiased point, `surface`)
+// along direction `d` from the light, within 0.01 of the point's own (grazing planes).
+float cubeSurfaceDepth(ShadowSite s, vec3 d) {
+    vec3 a = abs(s.surface);
+    float own = perspectiveWindowDepth(max(a.x, max(a.y, a.z)), s.near, s.far);
+    float denom = dot(d, s.planeNormal);
+    float k = abs(denom) > 1e-8 ? dot(s.surface, s.planeNormal) / denom : -1.0;
+    if (k <= 0.0) return own;
+    vec3 q = abs(d * k);
+    return clamp(perspectiveWindowDepth(max(q.x, max(q.y, q.z)), s.near, s.far), own - 0.01, own + 0.01);
+}
+// The receiver's linear depth at the centre of the texel `offset` texels from `centre` (in texels,
+// on cube face `face`), along its plane.
+float linearSurfaceAt(ShadowSite s, vec2 centre, int face, vec2 offset) {
+    if (s.cube) return linearShadowDepth(s.light, cubeSurfaceDepth(s, cubeFaceDirection(face, (centre + offset) / s.resolution)));
+    return linearShadowDepth(s.light, s.surface.z + clamp(dot(centre + offset - s.surface.xy * s.resolution, s.depthSlope), -0.01, 0.01));
+}
+// Where the lookup lands on its map, in texels (on cube face `face`).
+vec2 lookupTexel(ShadowSite s, out int face) {
+    face = 0;
+    return s.cube ? cubeFaceCoord(s.coord, face).xy * s.resolution : s.coord.xy * s.resolution;
+}
+
+// The own layers at the 2 x 2 texels around the lookup (gather order), and the tint there
+// weighed bilinearly after the division, so that a receiver's rim, where texels with and without
+// its own layer meet, is exact too. `known` is false where a texel's layers are not known; that
+// texel then gives its product where the receiver is behind its nearest layer (tint alpha,
+// NearestLayer), else 1.
+vec3 bilinearThroughOwnLayers(ShadowSite s, out bool known) {
+    int face;
+    vec2 texel = lookupTexel(s, face), centre = floor(texel - 0.5) + 1.0;  // between the 2 x 2
+    const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
+    vec4 linearSurface;
+    for (int i = 0; i < 4; ++i) linearSurface[i] = linearSurfaceAt(s, centre, face, vec2(dx[i], dy[i]));
+    float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
+    vec4 farthest = s.cube ? shadowDrawnFarthestGatherCube(s.slot, s.coord) : shadowDrawnFarthestGather2D(s.slot, centre / s.resolution);
+    vec4 entry = s.cube ? shadowDrawnEntryGatherCube(s.slot, s.coord) : shadowDrawnEntryGather2D(s.slot, centre / s.resolution);
+    vec4 own = ownLayersFrom(s, farthest, entry, linearSurface, perTexel);
+    mat4 tint = s.cube ? shadowTintGatherCube(s.slot, s.coord) : shadowTintGather2D(s.slot, centre / s.resolution);
     vec2 f = texel - (centre - 0.5);  // the upper texels' weights in x, y
     vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // gather order
     vec3 sum = vec3(0.0);
@@ -203,22 +212,33 @@ vec3 bilinearThroughOwnLayers(ShadowSite s, vec2 texel, vec2 centre, vec4 own, o
     }
     return sum;
 }
+// The same for the one texel the lookup lands in (nearest filtering): one fetch where the 2 x 2
+// take two gathers. Measured on llvmpipe, glass scene, hard's translucent pass: 13.8 ms against
+// 17.0 ms with the 2 x 2 (9.9 ms with no division; the receiver plane's derivatives are 1.6 ms of
+// the rest).
+float ownLayersAtTexel(ShadowSite s) {
+    int face;
+    vec2 centre = clamp(floor(lookupTexel(s, face)), vec2(0.0), vec2(s.resolution - 1.0)) + 0.5;
+    vec2 drawn = s.cube ? shadowDrawnCube(s.slot, cubeFaceDirection(face, centre / s.resolution)) : shadowDrawnFetch2D(s.slot, ivec2(centre));
+    float linearSurface = linearSurfaceAt(s, centre, face, vec2(0.0));
+    float perTexel = abs(linearSurfaceAt(s, centre, face, vec2(1.0, 0.0)) - linearSurface) +
+                     abs(linearSurfaceAt(s, centre, face, vec2(0.0, 1.0)) - linearSurface);
+    return ownLayersFrom(s, drawn.xxxx, drawn.yyyy, vec4(linearSurface), perTexel).x;
+}
 
 // The plain tint (NearestLayer) for a translucent receiver: the product with its own layers
-// divided out where ownLayersAt knows them, at the texel the tint is read from (nearest
+// divided out where ownLayersFrom knows them, at the texel the tint is read from (nearest
 // filtering) or at each of the 2 x 2 (SHADOW_TINT_LINEAR, pcf-bilinear). Elsewhere (an unknown
 // layer behind the receiver) the product of every layer behind whose nearest the receiver lies,
 // as before: the deterministic map cannot tell which layers lie in front. Measured on the glass
 // scene (compare --translucent-receivers): see the README's glass paragraph.
-vec3 tintThroughOwnLayers2D(ShadowSite s) {
-    vec2 texel = s.coord.xy * s.resolution;
+vec3 tintThroughOwnLayers(ShadowSite s) {
 #ifdef SHADOW_TINT_LINEAR
-    vec2 centre = floor(texel - 0.5) + 1.0;
     bool known;
-    return bilinearThroughOwnLayers(s, texel, centre, ownLayersAt(s, centre), known);
+    return bilinearThroughOwnLayers(s, known);
 #else
-    vec4 tint = shadowTint2D(s.slot, s.coord.xy);
-    float layers = ownLayersAtTexel(s, texel);
+    vec4 tint = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
+    float layers = ownLayersAtTexel(s);
     if (ownLayersDividable(layers)) return throughOwnLayers(tint.rgb, layers);
     return 1.0 - s.depth < tint.a ? tint.rgb : vec3(1.0);  // behind the nearest layer, or in front of it
 #endif
@@ -227,7 +247,7 @@ vec3 tintThroughOwnLayers2D(ShadowSite s) {
 // The translucent tint behind the nearest translucent layer (the colour map of Nápravník 2020).
 vec3 tintAt(ShadowSite s) {
 #if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
-    if (!s.cube) return tintThroughOwnLayers2D(s);
+    return tintThroughOwnLayers(s);
 #endif
     return s.cube ? shadowTintBehindCube(s.slot, s.coord, s.depth) : shadowTintBehind2D(s.slot, s.coord.xy, s.depth);
 }

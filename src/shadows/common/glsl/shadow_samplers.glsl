@@ -11,8 +11,9 @@ layout(binding = kUnitRaw2D) uniform sampler2D uShadowRaw[kMaxShadow2D];
 layout(binding = kUnitShadowCube) uniform samplerCubeShadow uShadowCube[kMaxShadowCube];
 layout(binding = kUnitTintCube) uniform samplerCube uShadowTintCube[kMaxShadowCube];
 layout(binding = kUnitRawCube) uniform samplerCube uShadowRawCube[kMaxShadowCube];
-// 1 - the farthest translucent layer's depth per texel, and the farthest entry's (DepthAndTintMaps::LightMaps::drawnAlpha).
+// 1 - the farthest translucent layer's depth per texel, and the farthest entry's (DepthAndTintMaps::LightMaps::drawn).
 layout(binding = kUnitDrawnFarthest2D) uniform sampler2D uShadowDrawn[kMaxShadow2D];
+layout(binding = kUnitDrawnFarthestCube) uniform samplerCube uShadowDrawnCube[kMaxShadowCube];  // nearest filtering
 
 #define SLOT_SWITCH_4(EXPR) \
     switch (slot) { case 0: return EXPR(0); case 1: return EXPR(1); case 2: return EXPR(2); default: return EXPR(3); }
@@ -39,6 +40,12 @@ mat4 shadowTintGather2D(int slot, vec2 uv) {
 #define S(i) mat4(textureGather(uShadowTint[i], uv, 0), textureGather(uShadowTint[i], uv, 1), \
                   textureGather(uShadowTint[i], uv, 2), textureGather(uShadowTint[i], uv, 3))
     SLOT_SWITCH_4(S)
+#undef S
+}
+mat4 shadowTintGatherCube(int slot, vec3 dir) {
+#define S(i) mat4(textureGather(uShadowTintCube[i], dir, 0), textureGather(uShadowTintCube[i], dir, 1), \
+                  textureGather(uShadowTintCube[i], dir, 2), textureGather(uShadowTintCube[i], dir, 3))
+    SLOT_SWITCH_2(S)
 #undef S
 }
 vec4 shadowTintCube(int slot, vec3 dir) {
@@ -97,6 +104,21 @@ vec4 shadowDrawnFarthestGather2D(int slot, vec2 uv) {
 vec2 shadowDrawnFetch2D(int slot, ivec2 texel) {  // one texel: (farthest layer, farthest entry)
 #define S(i) (vec2(1.0) - texelFetch(uShadowDrawn[i], texel, 0).rg)
     SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowDrawnFarthestGatherCube(int slot, vec3 dir) {
+#define S(i) (vec4(1.0) - textureGather(uShadowDrawnCube[i], dir, 0))
+    SLOT_SWITCH_2(S)
+#undef S
+}
+vec4 shadowDrawnEntryGatherCube(int slot, vec3 dir) {
+#define S(i) (vec4(1.0) - textureGather(uShadowDrawnCube[i], dir, 1))
+    SLOT_SWITCH_2(S)
+#undef S
+}
+vec2 shadowDrawnCube(int slot, vec3 dir) {  // the texel `dir` selects: (farthest layer, farthest entry)
+#define S(i) (vec2(1.0) - textureLod(uShadowDrawnCube[i], dir, 0.0).rg)
+    SLOT_SWITCH_2(S)
 #undef S
 }
 vec4 shadowDrawnEntryGather2D(int slot, vec2 uv) {
