@@ -60,6 +60,10 @@ Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int
     options.parameters = parameters;
     options.output = mode;
     options.debugLight = light;
+    return renderFrame(scene, options, width, height);
+}
+
+Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height) {
     render::Renderer renderer(scene, options);
     render::OffscreenTarget target(width, height);
     renderer.render(0.0f, scene.camera, width, height, target.framebuffer());

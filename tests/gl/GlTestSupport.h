@@ -24,6 +24,9 @@ struct Frame {
 
 scene::Scene sceneFromJson(const std::string& json);
 
+// Renders `scene` at time 0 from its camera with `options` and returns the linear picture.
+Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height);
+
 // Renders `scene` at time 0 from its camera and returns the chosen channel.
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light = 0, int width = 256, int height = 256,
                     const std::string& technique = "hard", const shadows::ParameterValues& parameters = {});

@@ -46,10 +46,7 @@ RegionStats underPanes(const std::vector<std::string>& materials, const std::str
     options.technique = technique;
     options.output = OutputMode::Visibility;
     options.parameters = parameters;
-    render::Renderer renderer(s, options);
-    render::OffscreenTarget target(96, 96);
-    renderer.render(0.0f, s.camera, 96, 96, target.framebuffer());
-    const Frame f{96, 96, renderer.readLinear()};
+    const Frame f = renderFrame(s, options, 96, 96);
     if (whole) *whole = f;
     RegionStats r;
     int n = 0;

@@ -184,21 +184,28 @@ vec2 lookupTexel(ShadowSite s, out int face) {
     return s.cube ? cubeFaceCoord(s.coord, face).xy * s.resolution : s.coord.xy * s.resolution;
 }
 
-// The own layers at the 2 x 2 texels around the lookup (gather order), and the tint there
-// weighed bilinearly after the division, so that a receiver's rim, where texels with and without
+// The own layers at the 2 x 2 texels around the lookup (gather order; `texel`: where it lands,
+// `centre`: between the four, in texels), and (bilinearThroughOwnLayers) the tint there weighed
+// bilinearly after the division, so that a receiver's rim, where texels with and without
 // its own layer meet, is exact too. `known` is false where a texel's layers are not known; that
 // texel then gives its product where the receiver is behind its nearest layer (tint alpha,
 // NearestLayer), else 1.
-vec3 bilinearThroughOwnLayers(ShadowSite s, out bool known) {
+vec4 ownLayersAround(ShadowSite s, out vec2 texel, out vec2 centre) {
     int face;
-    vec2 texel = lookupTexel(s, face), centre = floor(texel - 0.5) + 1.0;  // between the 2 x 2
+    texel = lookupTexel(s, face);
+    centre = floor(texel - 0.5) + 1.0;  // between the 2 x 2
     const vec4 dx = vec4(-0.5, 0.5, 0.5, -0.5), dy = vec4(0.5, 0.5, -0.5, -0.5);  // gather order
     vec4 linearSurface;
     for (int i = 0; i < 4; ++i) linearSurface[i] = linearSurfaceAt(s, centre, face, vec2(dx[i], dy[i]));
     float perTexel = abs(linearSurface.y - linearSurface.x) + abs(linearSurface.y - linearSurface.z);
-    vec4 farthest = s.cube ? shadowDrawnFarthestGatherCube(s.slot, s.coord) : shadowDrawnFarthestGather2D(s.slot, centre / s.resolution);
-    vec4 entry = s.cube ? shadowDrawnEntryGatherCube(s.slot, s.coord) : shadowDrawnEntryGather2D(s.slot, centre / s.resolution);
-    vec4 own = ownLayersFrom(s, farthest, entry, linearSurface, perTexel);
+    vec4 farthest, entry;
+    if (s.cube) shadowDrawnGatherCube(s.slot, s.coord, farthest, entry);
+    else shadowDrawnGather2D(s.slot, centre / s.resolution, farthest, entry);
+    return ownLayersFrom(s, farthest, entry, linearSurface, perTexel);
+}
+vec3 bilinearThroughOwnLayers(ShadowSite s, out bool known) {
+    vec2 texel, centre;
+    vec4 own = ownLayersAround(s, texel, centre);
     mat4 tint = s.cube ? shadowTintGatherCube(s.slot, s.coord) : shadowTintGather2D(s.slot, centre / s.resolution);
     vec2 f = texel - (centre - 0.5);  // the upper texels' weights in x, y
     vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // gather order

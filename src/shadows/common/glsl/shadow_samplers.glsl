@@ -95,35 +95,27 @@ vec4 shadowRawGatherAlpha2D(int slot, vec2 uv) {
 #undef S
 }
 // The window depth of the farthest translucent layer, and of the farthest entry into a solid
-// (transmit.frag), at the 2 x 2 texels around uv (gather order).
-vec4 shadowDrawnFarthestGather2D(int slot, vec2 uv) {
-#define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 0))
-    SLOT_SWITCH_4(S)
+// (transmit.frag): at the 2 x 2 texels around uv or dir (gather order), or at the one texel.
+#define DRAWN_GATHER(SAMPLER, COORD) farthest = vec4(1.0) - textureGather(SAMPLER, COORD, 0); entry = vec4(1.0) - textureGather(SAMPLER, COORD, 1); return;
+void shadowDrawnGather2D(int slot, vec2 uv, out vec4 farthest, out vec4 entry) {
+#define S(i) DRAWN_GATHER(uShadowDrawn[i], uv)
+    switch (slot) { case 0: S(0) case 1: S(1) case 2: S(2) default: S(3) }
 #undef S
 }
-vec2 shadowDrawnFetch2D(int slot, ivec2 texel) {  // one texel: (farthest layer, farthest entry)
+void shadowDrawnGatherCube(int slot, vec3 dir, out vec4 farthest, out vec4 entry) {
+#define S(i) DRAWN_GATHER(uShadowDrawnCube[i], dir)
+    switch (slot) { case 0: S(0) default: S(1) }
+#undef S
+}
+#undef DRAWN_GATHER
+vec2 shadowDrawnFetch2D(int slot, ivec2 texel) {
 #define S(i) (vec2(1.0) - texelFetch(uShadowDrawn[i], texel, 0).rg)
     SLOT_SWITCH_4(S)
 #undef S
 }
-vec4 shadowDrawnFarthestGatherCube(int slot, vec3 dir) {
-#define S(i) (vec4(1.0) - textureGather(uShadowDrawnCube[i], dir, 0))
-    SLOT_SWITCH_2(S)
-#undef S
-}
-vec4 shadowDrawnEntryGatherCube(int slot, vec3 dir) {
-#define S(i) (vec4(1.0) - textureGather(uShadowDrawnCube[i], dir, 1))
-    SLOT_SWITCH_2(S)
-#undef S
-}
-vec2 shadowDrawnCube(int slot, vec3 dir) {  // the texel `dir` selects: (farthest layer, farthest entry)
+vec2 shadowDrawnCube(int slot, vec3 dir) {  // nearest filtering: the texel `dir` selects
 #define S(i) (vec2(1.0) - textureLod(uShadowDrawnCube[i], dir, 0.0).rg)
     SLOT_SWITCH_2(S)
-#undef S
-}
-vec4 shadowDrawnEntryGather2D(int slot, vec2 uv) {
-#define S(i) (vec4(1.0) - textureGather(uShadowDrawn[i], uv, 1))
-    SLOT_SWITCH_4(S)
 #undef S
 }
 vec4 shadowRawGatherAlphaCube(int slot, vec3 dir) {
