@@ -31,12 +31,17 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         g.closedParts.assign(mesh.parts.size(), false);
         meshes_.push_back(std::move(g));
     }
+    // Each part once, however many translucent objects draw its mesh (partIsClosed is O(triangles)).
+    std::vector<std::vector<bool>> judged(scene.meshes.size());
     for (const auto& object : scene.objects) {
         const auto meshIndex = static_cast<std::size_t>(object.mesh);
         const scene::Mesh& mesh = scene.meshes[meshIndex];
+        judged[meshIndex].resize(mesh.parts.size());
         for (std::size_t p = 0; p < mesh.parts.size(); ++p)
-            if (scene.material(object, mesh.parts[p]).translucent() && !meshes_[meshIndex].closedParts[p])
+            if (scene.material(object, mesh.parts[p]).translucent() && !judged[meshIndex][p]) {
+                judged[meshIndex][p] = true;
                 meshes_[meshIndex].closedParts[p] = mesh.partIsClosed(p);
+            }
     }
     for (const auto& img : scene.images) images_.push_back(uploadImage(img, anisotropy));
 }

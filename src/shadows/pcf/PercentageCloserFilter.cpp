@@ -55,8 +55,8 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
 
 std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
     std::vector<std::string> defines{"PCF_KERNEL " + std::to_string(static_cast<int>(kernel_))};
-    // The bilinear kernel filters the tint too (setFiltering): a translucent receiver divides its
-    // own layer out only where it is the farthest at all 2 x 2 texels blended (tintAt).
+    // The bilinear kernel filters the tint too (setFiltering): a translucent receiver weighs the
+    // 2 x 2 texels' products with its own layers divided out (tintAt, bilinearThroughOwnLayers).
     if (kernel_ == Kernel::Bilinear) defines.emplace_back("SHADOW_TINT_LINEAR 1");
     return defines;
 }

@@ -215,7 +215,7 @@ vec3 bilinearThroughOwnLayers(ShadowSite s, out bool known) {
         vec3 product = vec3(tint[0][i], tint[1][i], tint[2][i]);
         bool divide = ownLayersDividable(own[i]);
         known = known && divide;
-        sum += weights[i] * (divide ? throughOwnLayers(product, own[i]) : 1.0 - s.depth < tint[3][i] ? product : vec3(1.0));
+        sum += weights[i] * (divide ? throughOwnLayers(product, own[i]) : tintBehind(vec4(product, tint[3][i]), s.depth));
     }
     return sum;
 }
@@ -246,8 +246,7 @@ vec3 tintThroughOwnLayers(ShadowSite s) {
 #else
     vec4 tint = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
     float layers = ownLayersAtTexel(s);
-    if (ownLayersDividable(layers)) return throughOwnLayers(tint.rgb, layers);
-    return 1.0 - s.depth < tint.a ? tint.rgb : vec3(1.0);  // behind the nearest layer, or in front of it
+    return ownLayersDividable(layers) ? throughOwnLayers(tint.rgb, layers) : tintBehind(tint, s.depth);
 #endif
 }
 
@@ -255,8 +254,9 @@ vec3 tintThroughOwnLayers(ShadowSite s) {
 vec3 tintAt(ShadowSite s) {
 #if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
     return tintThroughOwnLayers(s);
-#endif
+#else
     return s.cube ? shadowTintBehindCube(s.slot, s.coord, s.depth) : shadowTintBehind2D(s.slot, s.coord.xy, s.depth);
+#endif
 }
 
 // World distance along the light's axis, from window depth.
