@@ -40,7 +40,7 @@ TEST(Compare, HardShadowErrorIsSmallAndGrowsAtLowResolution) {
 // surface, panes included, by the light reaching it. A grey pane lit through a green one, with a
 // blue pane behind it as the light sees it: the plain map's tint multiplies every translucent
 // layer in front of the nearest opaque caster, and where a layer lies behind the receiver it
-// cannot tell the receiver's own and the blue one from those in front (tintThroughOwnLayers2D),
+// cannot tell the receiver's own and the blue one from those in front (tintThroughOwnLayers),
 // so each grey pixel gets green x grey x blue against the truth's green; CSSM's layers in front of
 // the receiver give green. Scoring only opaque surfaces, the ground behind the panes is what those
 // pixels show, and there the plain map is right.

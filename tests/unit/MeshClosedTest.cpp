@@ -1,5 +1,5 @@
 // Mesh::partIsClosed: whether a part bounds a solid, which tells translucent receivers that light
-// entering it leaves it through one more face of the same material (tintThroughOwnLayers2D).
+// entering it leaves it through one more face of the same material (tintThroughOwnLayers).
 #include "scene/Mesh.h"
 #include "scene/Shapes.h"
 
