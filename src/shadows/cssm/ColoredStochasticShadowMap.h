@@ -74,6 +74,7 @@ private:
     bool tintBehindAll() const { return usesTiles() && tintBehindAll_; }  // the lookup reads the tint maps
     int tileSide() const;
     void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole);
+    void buildCasters();
     // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).
     std::uint64_t colourKey(std::size_t light, std::size_t face) const;
 
@@ -87,6 +88,7 @@ private:
     DepthAndTintMaps depth_{/*withTint=*/false, DepthAndTintMaps::TintAlpha::FarthestAround};
     std::vector<LightMap> maps_;
     gl::Program copy_, casters_, tiles_, nearestLayer_;
+    int castersXi_ = -1;  // the ξ kind casters_ was built with (-1: not built)
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;
 };

@@ -15,8 +15,10 @@
 in vec2 vUv;
 uniform int uPerspective;
 uniform float uNear, uFar;
-uniform int uIndependentChannels;  // 0: one ξ for all channels (CSSM2), 1: one per channel (CSSM1)
-uniform int uXi;       // kXi*
+// Compile-time (ColoredStochasticShadowMap::buildCasters): llvmpipe would draw every ξ below for
+// every fragment if these were uniforms.
+const bool kIndependentChannels = CSSM_INDEPENDENT_CHANNELS != 0;  // false: one ξ for all channels (CSSM2); true: one per channel (CSSM1)
+const int kXi = CSSM_XI;  // kXi*
 uniform mat4 uModel;   // the caster's placement (caster.vert): tells objects apart, in any draw order
 layout(location = 0) out vec4 outDepth;
 
@@ -61,14 +63,14 @@ float stratifiedXi(uint stream) {
     return (float(stratum) + shift) / float(side * side);
 }
 
-float drawXi(uint stream) { return uXi == kXiStratified ? stratifiedXi(stream) : fragmentRandom(stream); }
+float drawXi(uint stream) { return kXi == kXiStratified ? stratifiedXi(stream) : fragmentRandom(stream); }
 
 void main() {
     vec3 rho = materialStopped(materialCoverage(materialTexel(vUv)));
     float z = linearDepth(gl_FragCoord.z);
     // CSSM2: one ξ shared by the channels. CSSM1: an independent ξ per channel (its own stream),
     // which is what the thesis's one pass per wavelength computes, here in a single pass.
-    vec3 xi = uIndependentChannels != 0 ? vec3(drawXi(1u), drawXi(2u), drawXi(3u)) : vec3(drawXi(0u));
+    vec3 xi = kIndependentChannels ? vec3(drawXi(1u), drawXi(2u), drawXi(3u)) : vec3(drawXi(0u));
     // Alpha: the nearest translucent layer of any channel (MIN-blended), whatever ξ drew, so
     // that lookups can tell where no coloured shadow can be.
     outDepth = vec4(mix(vec3(1.0), vec3(z), lessThan(xi, rho)), z);
