@@ -305,13 +305,8 @@ vec3 colouredByTiles(ShadowSite s, int side) {
 // glass scene with its spot made a point light: the translucent pass 61-72 -> 33-36 ms, as the
 // division spares the texel loop.
 bool decidedThroughOwnLayers(ShadowSite s, out vec3 light) {
-    if (s.cube) {
-        int face;
-        vec2 centre = landingTexel(s, face);
-        float layers = ownLayersAtTexel(s);
-        light = throughOwnLayers(shadowTintCube(s.slot, cubeFaceDirection(face, centre / s.resolution)).rgb, layers);
-        return ownLayersDividable(layers);
-    }
+    vec4 landing;
+    if (s.cube) return landingTintThroughOwnLayers(s, light, landing);
     vec2 texel, centre;
     vec4 own = ownLayersAround(s, texel, centre);
     float layers = all(equal(own, own.xxxx)) ? own.x : -1.0;

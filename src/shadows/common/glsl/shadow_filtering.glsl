@@ -187,9 +187,8 @@ vec2 lookupTexel(ShadowSite s, out int face) {
 // The own layers at the 2 x 2 texels around the lookup (gather order; `texel`: where it lands,
 // `centre`: between the four, in texels), and (bilinearThroughOwnLayers) the tint there weighed
 // bilinearly after the division, so that a receiver's rim, where texels with and without
-// its own layer meet, is exact too. `known` is false where a texel's layers are not known; that
-// texel then gives its product where the receiver is behind its nearest layer (tint alpha,
-// NearestLayer), else 1.
+// its own layer meet, is exact too. A texel whose layers are not known gives its product where the
+// receiver is behind its nearest layer (tint alpha, NearestLayer), else 1.
 vec4 ownLayersAround(ShadowSite s, out vec2 texel, out vec2 centre) {
     int face;
     texel = lookupTexel(s, face);
@@ -203,18 +202,16 @@ vec4 ownLayersAround(ShadowSite s, out vec2 texel, out vec2 centre) {
     else shadowDrawnGather2D(s.slot, centre / s.resolution, farthest, entry);
     return ownLayersFrom(s, farthest, entry, linearSurface, perTexel);
 }
-vec3 bilinearThroughOwnLayers(ShadowSite s, out bool known) {
+vec3 bilinearThroughOwnLayers(ShadowSite s) {
     vec2 texel, centre;
     vec4 own = ownLayersAround(s, texel, centre);
     mat4 tint = s.cube ? shadowTintGatherCube(s.slot, s.coord) : shadowTintGather2D(s.slot, centre / s.resolution);
     vec2 f = texel - (centre - 0.5);  // the upper texels' weights in x, y
     vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // gather order
     vec3 sum = vec3(0.0);
-    known = true;
     for (int i = 0; i < 4; ++i) {
         vec3 product = vec3(tint[0][i], tint[1][i], tint[2][i]);
         bool divide = ownLayersDividable(own[i]);
-        known = known && divide;
         sum += weights[i] * (divide ? throughOwnLayers(product, own[i]) : tintBehind(vec4(product, tint[3][i]), s.depth));
     }
     return sum;
@@ -235,6 +232,17 @@ float ownLayersAtTexel(ShadowSite s) {
                      abs(linearSurfaceAt(s, centre, face, vec2(0.0, 1.0)) - linearSurface);
     return ownLayersFrom(s, drawn.xxxx, drawn.yyyy, vec4(linearSurface), perTexel).x;
 }
+// The tint of the texel the lookup lands in, read at its centre so that the map's filtering,
+// nearest or linear, returns that texel alone; `light` is that tint with the receiver's own layers
+// there divided out, and the result whether they are known (else `tint` serves the caller's way).
+bool landingTintThroughOwnLayers(ShadowSite s, out vec3 light, out vec4 tint) {
+    int face;
+    vec2 centre = landingTexel(s, face) / s.resolution;
+    tint = s.cube ? shadowTintCube(s.slot, cubeFaceDirection(face, centre)) : shadowTint2D(s.slot, centre);
+    float layers = ownLayersAtTexel(s);
+    light = throughOwnLayers(tint.rgb, layers);
+    return ownLayersDividable(layers);
+}
 
 // The plain tint (NearestLayer) for a translucent receiver: the product with its own layers
 // divided out where ownLayersFrom knows them, at the texel the tint is read from (nearest
@@ -244,12 +252,11 @@ float ownLayersAtTexel(ShadowSite s) {
 // scene (compare --translucent-receivers): see the README's glass paragraph.
 vec3 tintThroughOwnLayers(ShadowSite s) {
 #ifdef SHADOW_TINT_LINEAR
-    bool known;
-    return bilinearThroughOwnLayers(s, known);
+    return bilinearThroughOwnLayers(s);
 #else
-    vec4 tint = s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy);
-    float layers = ownLayersAtTexel(s);
-    return ownLayersDividable(layers) ? throughOwnLayers(tint.rgb, layers) : tintBehind(tint, s.depth);
+    vec3 light;
+    vec4 tint;
+    return landingTintThroughOwnLayers(s, light, tint) ? light : tintBehind(tint, s.depth);
 #endif
 }
 
