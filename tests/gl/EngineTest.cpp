@@ -7,7 +7,6 @@
 #include "render/Offscreen.h"
 #include "util/Log.h"
 
-#include <algorithm>
 #include <fstream>
 
 namespace penumbra::test {
@@ -380,11 +379,8 @@ TEST_P(DebugOutput, EveryLightTypeIsClean) {
     EXPECT_EQ(gl::debugErrorCount(), 0) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Techniques, DebugOutput, ::testing::ValuesIn(techniqueNames()), [](const auto& info) {
-    std::string name = info.param;
-    std::replace(name.begin(), name.end(), '-', '_');
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(Techniques, DebugOutput, ::testing::ValuesIn(techniqueNames()),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 }  // namespace
 }  // namespace penumbra::test

@@ -5,6 +5,7 @@
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
 
+#include <algorithm>
 #include <dlfcn.h>
 #include <execinfo.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -61,6 +62,11 @@ Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int
     options.output = mode;
     options.debugLight = light;
     return renderFrame(scene, options, width, height);
+}
+
+std::string testNameOf(std::string technique) {
+    std::replace(technique.begin(), technique.end(), '-', '_');
+    return technique;
 }
 
 Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height) {

@@ -24,6 +24,9 @@ struct Frame {
 
 scene::Scene sceneFromJson(const std::string& json);
 
+// A technique's name as a gtest parameter name: '-' is not allowed there ("pcf-bilinear" -> "pcf_bilinear").
+std::string testNameOf(std::string technique);
+
 // Renders `scene` at time 0 from its camera with `options` and returns the linear picture.
 Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height);
 

@@ -281,11 +281,7 @@ INSTANTIATE_TEST_SUITE_P(Techniques, TranslucentReceiver,
                                            TranslucentReceiverCase{"pcf-bilinear", 0.1f},
                                            TranslucentReceiverCase{"cssm1", 0.06f},
                                            TranslucentReceiverCase{"cssm2", 0.06f}),
-                         [](const auto& info) {
-                             std::string name = info.param.technique;
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+                         [](const auto& info) { return testNameOf(info.param.technique); });
 
 }  // namespace
 }  // namespace penumbra::test
