@@ -15,7 +15,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
   # Tests that start third-party programs (xvfb-run, chromium) or clang-built fuzzers keep the
-  # preload away from them (tests/cli/helpers.cmake); the soak skips its resident-memory bound.
+  # preload away from them (tests/cli/helpers.cmake); the soak skips its memory bounds.
   export PENUMBRA_SANITIZED=1
   cd build-sanitize
   ctest --output-on-failure -j 2 --timeout 1200
