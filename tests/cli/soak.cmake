@@ -5,8 +5,9 @@
 # error occurs, the mean resident memory over the fifth cycle's samples is at most 24 MiB above
 # the second's (a leak adds up over the three cycles between: a sabotage leaking 2 MiB per
 # technique switch, 56 MiB a cycle, measured +168 MiB), and, on llvmpipe, memory in use from
-# malloc at every change after the first cycle is at most 16 MiB above the least of them: the
-# technique just left has handed its maps back (a 2048^2 map of two floats is 32 MiB).
+# malloc at every change after the first cycle is at most 24 MiB above the least of them: the
+# technique just left has handed its maps back (a 2048^2 map of two floats or four halves is
+# 32 MiB; the spread measured 9.4 MiB).
 #
 # Why LP_NUM_THREADS=0. With rasteriser threads, llvmpipe (Mesa 22.3) hands a finished scene's
 # references to textures back only when it reuses that scene for a later flush, and it reuses
@@ -117,7 +118,7 @@ endif()
 string(JSON device GET "${stats}" device)
 math(EXPR heap_spread "${heap_most} - ${heap_least}")
 message(STATUS "soak: malloc'd memory at the changes after the first cycle ${heap_least} to ${heap_most} KiB (${device})")
-if(device MATCHES "llvmpipe" AND heap_spread GREATER 16384)
+if(device MATCHES "llvmpipe" AND heap_spread GREATER 24576)
   message(FATAL_ERROR "malloc'd memory at ${heap_most_at} was ${heap_most} KiB, ${heap_spread} KiB above the least "
                       "(${heap_least} KiB) at a change: the technique left before it kept memory")
 endif()
