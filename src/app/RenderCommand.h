@@ -36,6 +36,7 @@ struct SoakSample {
     int width = 0, height = 0, shadowResolution = 0;
     long rssKiB = 0;
     long heapKiB = 0;  // KiB in use from glibc's malloc (mallinfo2: the main arena and mmapped chunks)
+    long mmappedKiB = 0;  // of heapKiB, the mmapped chunks: big blocks such as textures' storage under llvmpipe
     long glObjects = 0;
     std::size_t shadowMemoryBytes = 0;
     int glErrors = 0;
