@@ -53,11 +53,12 @@ long mmappedKiB() { return static_cast<long>(::mallinfo2().hblkhd / 1024); }
 // depends on thread timing (tests/cli/soak.cmake has the measurements). Rasterising on the calling
 // thread (LP_NUM_THREADS=0), memory follows what is live.
 void hintAtLlvmpipeThreads() {
-    const char* threads = std::getenv("LP_NUM_THREADS");
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (renderer && std::string_view(renderer).find("llvmpipe") != std::string_view::npos && !(threads && std::string_view(threads) == "0"))
+    const char* threads = std::getenv("LP_NUM_THREADS");
+    const bool llvmpipe = renderer && std::string_view(renderer).find("llvmpipe") != std::string_view::npos;
+    if (llvmpipe && !(threads && std::string_view(threads) == "0"))
         log::info("soak on llvmpipe with rasteriser threads: its memory figures include deleted maps the driver has not "
-                        "released yet; set LP_NUM_THREADS=0 to read live memory");
+                  "released yet; set LP_NUM_THREADS=0 to read live memory");
 }
 
 int drainGlErrors() {
@@ -227,7 +228,8 @@ BatchResult renderBatch(const BatchJob& job) {
         nlohmann::json soak = nlohmann::json::array();
         for (const SoakSample& s : result.soak)
             soak.push_back({{"frame", s.frame}, {"technique", s.technique}, {"width", s.width}, {"height", s.height},
-                            {"shadow_resolution", s.shadowResolution}, {"rss_kib", s.rssKiB}, {"heap_kib", s.heapKiB}, {"heap_mmapped_kib", s.mmappedKiB}, {"gl_objects", s.glObjects},
+                            {"shadow_resolution", s.shadowResolution}, {"rss_kib", s.rssKiB}, {"heap_kib", s.heapKiB},
+                            {"heap_mmapped_kib", s.mmappedKiB}, {"gl_objects", s.glObjects},
                             {"shadow_memory_bytes", s.shadowMemoryBytes}, {"gl_errors", s.glErrors}});
         stats["soak"] = soak;
     }
