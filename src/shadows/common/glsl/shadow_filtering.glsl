@@ -219,13 +219,11 @@ vec3 bilinearThroughOwnLayers(ShadowSite s) {
 // The centre of the texel the lookup lands in, in texels (on cube face `face`): the texel nearest
 // filtering reads.
 vec2 landingTexel(ShadowSite s, out int face) { return clamp(floor(lookupTexel(s, face)), vec2(0.0), vec2(s.resolution - 1.0)) + 0.5; }
-// The own layers at that texel alone (nearest filtering): one fetch where ownLayersAround's 2 x 2
-// take two gathers. Measured on llvmpipe, glass scene, hard's translucent pass: 13.8 ms against
-// 17.0 ms with the 2 x 2 (9.9 ms with no division; the receiver plane's derivatives are 1.6 ms of
-// the rest).
-float ownLayersAtTexel(ShadowSite s) {
-    int face;
-    vec2 centre = landingTexel(s, face);
+// The own layers at that texel alone (`centre`, in texels, on face `face`; nearest filtering): one
+// fetch where ownLayersAround's 2 x 2 take two gathers. Measured on llvmpipe, glass scene, hard's
+// translucent pass: 13.8 ms against 17.0 ms with the 2 x 2 (9.9 ms with no division; the receiver
+// plane's derivatives are 1.6 ms of the rest).
+float ownLayersAtTexel(ShadowSite s, vec2 centre, int face) {
     vec2 drawn = s.cube ? shadowDrawnCube(s.slot, cubeFaceDirection(face, centre / s.resolution)) : shadowDrawnFetch2D(s.slot, ivec2(centre));
     float linearSurface = linearSurfaceAt(s, centre, face, vec2(0.0));
     float perTexel = abs(linearSurfaceAt(s, centre, face, vec2(1.0, 0.0)) - linearSurface) +
@@ -237,9 +235,9 @@ float ownLayersAtTexel(ShadowSite s) {
 // there divided out, and the result whether they are known (else `tint` serves the caller's way).
 bool landingTintThroughOwnLayers(ShadowSite s, out vec3 light, out vec4 tint) {
     int face;
-    vec2 centre = landingTexel(s, face) / s.resolution;
+    vec2 texel = landingTexel(s, face), centre = texel / s.resolution;
     tint = s.cube ? shadowTintCube(s.slot, cubeFaceDirection(face, centre)) : shadowTint2D(s.slot, centre);
-    float layers = ownLayersAtTexel(s);
+    float layers = ownLayersAtTexel(s, texel, face);
     light = throughOwnLayers(tint.rgb, layers);
     return ownLayersDividable(layers);
 }
