@@ -42,11 +42,14 @@ long residentKiB() {
 // Memory in use from malloc (the driver's included), as mallinfo2 counts it: the main arena and
 // mmapped chunks, not other threads' arenas. Unlike resident memory, it does not depend on which
 // freed pages the allocator and the kernel happen to keep.
-long heapInUseKiB() {
+// `mmappedKiB` is the part in mmapped chunks: big blocks, such as textures' storage under llvmpipe.
+struct HeapInUse {
+    long kib, mmappedKiB;
+};
+HeapInUse heapInUse() {
     const struct mallinfo2 m = ::mallinfo2();
-    return static_cast<long>((m.uordblks + m.hblkhd) / 1024);
+    return {static_cast<long>((m.uordblks + m.hblkhd) / 1024), static_cast<long>(m.hblkhd / 1024)};
 }
-long mmappedKiB() { return static_cast<long>(::mallinfo2().hblkhd / 1024); }
 
 // With rasteriser threads, llvmpipe releases a scene's references to textures only when it reuses
 // that scene for a later flush, so a deleted technique's maps can stay allocated for a while that
@@ -123,9 +126,10 @@ BatchResult renderBatch(const BatchJob& job) {
     BatchResult result;
     auto sample = [&](int frame) {
         glFinish();
-        result.soak.push_back({frame, renderer.technique().name(), width, height, renderer.options().shadowResolution,
-                               residentKiB(), heapInUseKiB(), mmappedKiB(), gl::liveObjectCount(), renderer.shadowMemoryBytes(),
-                               drainGlErrors()});
+        const long resident = residentKiB();  // trims the heap first
+        const HeapInUse heap = heapInUse();
+        result.soak.push_back({frame, renderer.technique().name(), width, height, renderer.options().shadowResolution, resident,
+                               heap.kib, heap.mmappedKiB, gl::liveObjectCount(), renderer.shadowMemoryBytes(), drainGlErrors()});
     };
     const bool soaking = job.cycleTechniquesEvery > 0 || job.cycleSizesEvery > 0;
     if (soaking) {
