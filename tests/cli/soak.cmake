@@ -14,7 +14,7 @@
 # the first free scene of its pool: the others keep a deleted technique's maps alive for a while
 # that depends on thread timing. Measured at 64x48 with threads: malloc'd memory at the first
 # pcf-grid sample of each cycle read 45 / 111 / 150 / 150 / 47 MiB, heaptrack found deleted
-# LiSPSM and CSSM maps (67 and 45 MiB) still allocated 10 techniques later, and the cycle means
+# LiSPSM and CSSM maps (64 and 42.5 MiB) still allocated 1-7 techniques later, and the cycle means
 # of resident memory moved by up to 101 MiB from the second cycle to the fifth with GL objects
 # flat (it failed a 96 MiB bound on CI). Rasterising on the calling thread, each scene is
 # retired before the next starts; two runs read cycle means of 130 / 128 / 128 / 128 / 128 MiB
