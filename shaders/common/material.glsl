@@ -18,8 +18,13 @@ vec4 materialTexel(vec2 uv) { return uHasTexture != 0 ? texture(uDiffuseTexture,
 #endif
 
 // Coverage after the texture's alpha; fragments under the alpha-test cutoff are dropped.
+// MATERIAL_NO_ALPHA_TEST: a build for materials without a cutoff (render/LightingProgram.h) has
+// no `discard` at all, which lets llvmpipe write depth before shading instead of after it
+// (lp_state_fs.c; the uniform's false does not count).
 float materialCoverage(vec4 texel) {
+#ifndef MATERIAL_NO_ALPHA_TEST
     if (uAlphaCutoff > 0.0 && texel.a < uAlphaCutoff) discard;
+#endif
     return uAlphaCutoff > 0.0 ? uAlpha : uAlpha * texel.a;
 }
 

@@ -26,11 +26,13 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int su
 // layout, a transparency variant).
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
 
-// The lighting program in up to four builds: with or without a diffuse texture, for opaque or
-// translucent surfaces. MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
-// under `uHasTexture != 0` for every fragment whatever the uniform says (measured, default
-// scene, none: ~2.5 ms of a 21 ms opaque pass). MATERIAL_TRANSLUCENT lets a lookup pick what
-// suits receivers that are themselves translucent layers (CSSM's nearest-layer statistics). The
+// The lighting program in up to eight builds: with or without a diffuse texture, for opaque or
+// translucent surfaces, with or without an alpha test. MATERIAL_UNTEXTURED never samples the
+// texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment whatever the
+// uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
+// MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
+// layers (CSSM's nearest-layer statistics). MATERIAL_NO_ALPHA_TEST (materials without a cutoff)
+// leaves the alpha test's `discard` out, as DepthCasterProgram does for casters. The
 // build the scene needs first is compiled at once, so shader errors still surface there; the
 // others when a surface first asks for them.
 class LightingPrograms {
@@ -48,7 +50,7 @@ public:
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    gl::Program builds_[4];  // [untextured + 2 translucent]
+    gl::Program builds_[8];  // [untextured + 2 translucent + 4 alpha-tested]
 };
 
 }  // namespace penumbra::render

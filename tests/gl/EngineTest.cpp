@@ -156,24 +156,40 @@ TEST(LightLayout, CastersTurnedTranslucentBetweenFramesTintTheirShadow) {
     }
 }
 
-// Alpha-tested casters go through their own depth program (DepthCasterProgram: the plain one
-// has no alpha test at all), in every kind of map: two opaque-textured plates over the ground,
-// one cut at 0.5 (every texel kept) and one at 1.1 (every texel a hole), 2 units up. Under a sun
-// at 45 degrees towards +x, their shadows fall clear of them, around x = -2 (pixel 31 of 96, at
-// ~8.6 px per unit) and x = +4 (pixel 82).
-class AlphaTestedCasters : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(AlphaTestedCasters, CutOutTexelsCastNoShadow) {
-    scene::Scene s = sceneFromJson(R"({
+// Two opaque-textured plates over the ground, one cut at 0.5 (every texel kept) and one at 1.1
+// (every texel a hole), 2 units up, seen from above (~8.6 px per unit over 96 px: x = -4 is
+// pixel 14, x = 0 pixel 48, x = +2 pixel 65). Under a sun at 45 degrees towards +x, their
+// shadows fall clear of them, around x = -2 (pixel 31) and x = +4 (pixel 82).
+scene::Scene alphaTestedPlates() {
+    return sceneFromJson(R"({
       "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
       "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
       "objects": [ { "shape": "plane", "size": [20, 20] },
         { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "quadrants.png", "alpha_cutoff": 0.5 } },
         { "shape": "plane", "size": [2, 2], "position": [2, 2, 0], "material": { "texture": "quadrants.png", "alpha_cutoff": 1.1 } } ] })");
+}
+
+// Alpha-tested casters go through their own depth program (DepthCasterProgram: the plain one
+// has no alpha test at all), in every kind of map.
+class AlphaTestedCasters : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AlphaTestedCasters, CutOutTexelsCastNoShadow) {
+    scene::Scene s = alphaTestedPlates();
     const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, GetParam());
     EXPECT_LT(f.at(31, 48).r, 0.1f) << "the kept plate shadows the ground";
     EXPECT_NEAR(f.at(82, 48).r, 1.0f, 0.05f) << "the all-holes plate casts nothing";
     EXPECT_NEAR(f.at(48, 48).r, 1.0f, 0.05f) << "open ground";
+}
+
+// The camera sees through cut-out texels too: only materials with a cutoff get the lighting
+// build with the alpha test (LightingPrograms: the others have no `discard`). World position
+// channel: height 2 on the kept plate, the ground's 0 through the all-holes one.
+TEST(AlphaTestedSurfaces, TheCameraSeesThroughTheirHoles) {
+    scene::Scene s = alphaTestedPlates();
+    const Frame f = renderChannel(s, OutputMode::WorldPosition, 0, 96, 96);
+    EXPECT_NEAR(f.at(14, 48).g, 2.0f, 0.01f) << "the kept plate";
+    EXPECT_NEAR(f.at(65, 48).g, 0.0f, 0.01f) << "the ground through the all-holes plate";
+    EXPECT_NEAR(f.at(65, 48).r, 2.0f, 0.15f) << "the ground below the all-holes plate's centre";
 }
 
 // One technique per kind of depth map: DepthAndTintMaps, LayeredDepthMap, moment maps.
