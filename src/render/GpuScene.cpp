@@ -66,13 +66,20 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);
+            for (int i = 0; i < 8; ++i) d.farthest = std::max(d.farthest, glm::length(d.worldBounds.corner(i) - eye));
             d.triangles = mesh.parts[p].indexCount / 3;
             out.push_back(d);
         }
     }
+    // Opaque parts first, nearest farthest corner first: the ground and other big surfaces behind
+    // the rest come last, so the early depth test drops their hidden fragments before shading.
+    // Measured (llvmpipe, 1280x720, three alternated rounds against scene order, opaque pass):
+    // default scene hard 33.6-39.9 -> 31.0-36.2 ms, cssm2 42.3-60.9 -> 35.8-45.7; glass scene hard
+    // 34.2-41.3 -> 28.7-35.2, cssm2 48.5-58.0 -> 40.8-48.2. The box centre's distance (the
+    // translucent order) gained nothing: a ground plane's centre is as near as the objects on it.
     std::stable_sort(out.begin(), out.end(), [](const Draw& a, const Draw& b) {
         if (a.translucent != b.translucent) return !a.translucent;
-        return a.translucent && a.viewDepth > b.viewDepth;
+        return a.translucent ? a.viewDepth > b.viewDepth : a.farthest < b.farthest;
     });
     return out;
 }

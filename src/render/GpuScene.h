@@ -22,6 +22,7 @@ struct Draw {
     bool visible;
     bool moving = false;  // the object is animated: its transform may differ from frame to frame
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
+    float farthest = 0;   // distance from the eye to the farthest corner of worldBounds (opaque order)
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     std::size_t triangles = 0;
 };
@@ -33,7 +34,8 @@ public:
     explicit GpuScene(const scene::Scene& scene, float anisotropy = 1.0f, bool clusters = true);
     void setAnisotropy(float anisotropy);
 
-    // All parts of all objects at `time`; translucent ones sorted back to front from `eye`.
+    // All parts of all objects at `time`: opaque ones first, nearest farthest corner first;
+    // translucent ones after them, back to front from `eye`.
     std::vector<Draw> draws(float time, const glm::vec3& eye) const;
     // Sets uModel, material uniforms and uClosedPart (the part bounds a solid of one untextured
     // material: a light ray leaves it through a face of the same transmittance) on `program`,
