@@ -31,17 +31,13 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         g.closedParts.assign(mesh.parts.size(), false);
         meshes_.push_back(std::move(g));
     }
-    // Each part once, however many translucent objects draw its mesh (partIsClosed is O(triangles)).
-    std::vector<std::vector<bool>> judged(scene.meshes.size());
+    // Each mesh once, however many objects draw it, and none that no object draws.
+    std::vector<bool> judged(scene.meshes.size());
     for (const auto& object : scene.objects) {
         const auto meshIndex = static_cast<std::size_t>(object.mesh);
-        const scene::Mesh& mesh = scene.meshes[meshIndex];
-        judged[meshIndex].resize(mesh.parts.size());
-        for (std::size_t p = 0; p < mesh.parts.size(); ++p)
-            if (scene.material(object, mesh.parts[p]).translucent() && !judged[meshIndex][p]) {
-                judged[meshIndex][p] = true;
-                meshes_[meshIndex].closedParts[p] = mesh.partIsClosed(p);
-            }
+        if (judged[meshIndex]) continue;
+        judged[meshIndex] = true;
+        meshes_[meshIndex].closedParts = scene.meshes[meshIndex].closedParts();
     }
     for (const auto& img : scene.images) images_.push_back(uploadImage(img, anisotropy));
 }
@@ -63,6 +59,8 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
                                       scene_.images[static_cast<std::size_t>(mat.diffuseTexture)].hasTranslucentAlpha();
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
             d.moving = !obj.animation.empty();
+            // A mirroring transform turns the winding inside out; such parts are drawn whole.
+            d.solid = meshes_[meshIndex].closedParts[p] && glm::determinant(glm::mat3(model)) > 0.0f;
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

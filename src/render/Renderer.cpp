@@ -52,6 +52,15 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
 }
 
 // Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
+// A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
+// camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
+// order puts them first, shades them before the front faces cover them. (An eye inside a solid
+// sees through it.)
+static void cullBackFacesOfSolid(const Draw& d) {
+    if (d.solid) glEnable(GL_CULL_FACE);
+    else glDisable(GL_CULL_FACE);
+}
+
 static bool anyTranslucentCaster(const std::vector<Draw>& draws) {
     return std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.castsShadow && d.translucent; });
 }
@@ -367,6 +376,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     for (const Draw& d : draws) {
         if (!drawn(d)) continue;
         const gl::Program& program = lighting_.of(*d.material, d.translucent);
+        if (!translucent) cullBackFacesOfSolid(d);  // translucent solids show their far side through the near one
         if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
         else gpu_.draw(d, program);
     }
@@ -391,7 +401,10 @@ void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camer
     state.colorWrite = glm::bvec4(false);
     const gl::ScopedPassState scope(state);
     for (const Draw& d : draws)
-        if (d.visible && !d.translucent && (options_.depthPrepass || !ownObject(d.object))) gpu_.draw(d, programs.of(*d.material));
+        if (d.visible && !d.translucent && (options_.depthPrepass || !ownObject(d.object))) {
+            cullBackFacesOfSolid(d);
+            gpu_.draw(d, programs.of(*d.material));
+        }
 }
 
 void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {

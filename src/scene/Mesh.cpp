@@ -1,7 +1,10 @@
 #include "scene/Mesh.h"
 
+#include <algorithm>
+#include <array>
 #include <cstring>
-#include <unordered_map>
+#include <numeric>
+#include <vector>
 
 namespace penumbra::scene {
 
@@ -17,40 +20,64 @@ void Mesh::computeBounds() {
     for (const auto& v : vertices) bounds.add(v.position);
 }
 
-bool Mesh::partIsClosed(std::size_t part) const {
-    if (part >= parts.size()) return false;
-    const MeshPart& p = parts[part];
-    if (p.indexCount < 12 || p.firstIndex + static_cast<std::size_t>(p.indexCount) > indices.size()) return false;
-    // Welded ids: one per distinct position (a box's faces, a sphere's seam and poles repeat them).
-    struct PositionHash {
-        std::size_t operator()(const glm::vec3& v) const {
-            const glm::vec3 w = v + glm::vec3(0.0f);  // -0 + 0 = +0: equal positions, equal bits
-            std::uint32_t bits[3];
-            std::memcpy(bits, &w, sizeof bits);
-            return (static_cast<std::size_t>(bits[0]) * 73856093u) ^ (static_cast<std::size_t>(bits[1]) * 19349663u) ^
-                   (static_cast<std::size_t>(bits[2]) * 83492791u);
-        }
+// Per vertex, an id shared by every vertex at the same position (a box's faces, a sphere's seam
+// and poles repeat positions): the vertices sorted by their position's bits, -0 taken as +0.
+static std::vector<std::uint32_t> weldedIds(const std::vector<Vertex>& vertices) {
+    using Key = std::array<std::uint32_t, 3>;
+    const auto key = [&](std::uint32_t i) {
+        const glm::vec3 w = vertices[i].position + glm::vec3(0.0f);  // -0 + 0 = +0: equal positions, equal bits
+        Key bits;
+        std::memcpy(bits.data(), &w, sizeof bits);
+        return bits;
     };
-    std::unordered_map<glm::vec3, std::uint32_t, PositionHash> welded;
-    std::unordered_map<std::uint64_t, int> edges;  // directed edge (from << 32 | to) -> times run
+    std::vector<std::uint32_t> order(vertices.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    std::vector<std::uint32_t> ids(vertices.size());
+    std::uint32_t id = 0;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        if (k > 0 && key(order[k]) != key(order[k - 1])) ++id;
+        ids[order[k]] = id;
+    }
+    return ids;
+}
+
+// Whether the triangles of `p` bound a solid, given the vertices' welded ids.
+static bool bindsSolid(const Mesh& mesh, const MeshPart& p, const std::vector<std::uint32_t>& welded) {
+    if (p.indexCount < 12 || p.firstIndex + static_cast<std::size_t>(p.indexCount) > mesh.indices.size()) return false;
+    // Directed edges (from << 32 | to): a closed surface wound one way runs each edge once and
+    // its reverse once, so the sorted edges, reversed and sorted again, are the same list.
+    std::vector<std::uint64_t> edges;
+    edges.reserve(p.indexCount);
     double volume = 0.0;
     for (std::uint32_t t = 0; t + 2 < p.indexCount; t += 3) {
         std::uint32_t id[3];
         glm::dvec3 q[3];
         for (int k = 0; k < 3; ++k) {
-            const glm::vec3& v = vertices.at(indices[p.firstIndex + t + static_cast<std::uint32_t>(k)]).position;
-            id[k] = welded.try_emplace(v, static_cast<std::uint32_t>(welded.size())).first->second;
-            q[k] = glm::dvec3(v);
+            const std::uint32_t index = mesh.indices[p.firstIndex + t + static_cast<std::uint32_t>(k)];
+            if (index >= welded.size()) return false;
+            id[k] = welded[index];
+            q[k] = glm::dvec3(mesh.vertices[index].position);
         }
-        if (id[0] == id[1] || id[1] == id[2] || id[2] == id[0]) continue;
-        for (int k = 0; k < 3; ++k) ++edges[static_cast<std::uint64_t>(id[k]) << 32 | id[(k + 1) % 3]];
+        if (id[0] == id[1] || id[1] == id[2] || id[2] == id[0]) continue;  // degenerate
+        for (int k = 0; k < 3; ++k) edges.push_back(static_cast<std::uint64_t>(id[k]) << 32 | id[(k + 1) % 3]);
         volume += glm::dot(q[0], glm::cross(q[1], q[2])) / 6.0;
     }
-    for (const auto& [edge, count] : edges) {
-        const auto reverse = edges.find(edge << 32 | edge >> 32);
-        if (count != 1 || reverse == edges.end() || reverse->second != 1) return false;
-    }
-    return !edges.empty() && volume > 0.0;
+    std::sort(edges.begin(), edges.end());
+    if (edges.empty() || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;  // an edge run twice
+    std::vector<std::uint64_t> reversed(edges.size());
+    std::transform(edges.begin(), edges.end(), reversed.begin(), [](std::uint64_t e) { return e << 32 | e >> 32; });
+    std::sort(reversed.begin(), reversed.end());
+    return reversed == edges && volume > 0.0;
 }
+
+std::vector<bool> Mesh::closedParts() const {
+    const std::vector<std::uint32_t> welded = weldedIds(vertices);
+    std::vector<bool> closed(parts.size());
+    for (std::size_t p = 0; p < parts.size(); ++p) closed[p] = bindsSolid(*this, parts[p], welded);
+    return closed;
+}
+
+bool Mesh::partIsClosed(std::size_t part) const { return part < parts.size() && closedParts()[part]; }
 
 }  // namespace penumbra::scene

@@ -49,10 +49,12 @@ struct Mesh {
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     void computeBounds();
-    // Whether part `part`'s triangles bound a solid: vertices welded by position, every edge
+    // Per part, whether its triangles bound a solid: vertices welded by position, every edge
     // shared by exactly two triangles that run it in opposite directions, wound counter-clockwise
-    // seen from outside (positive volume). Degenerate triangles are left out. O(triangles).
-    bool partIsClosed(std::size_t part) const;
+    // seen from outside (positive volume). Degenerate triangles are left out. Sorts, no hashing:
+    // O(n log n) in vertices and triangles, once for all parts.
+    std::vector<bool> closedParts() const;
+    bool partIsClosed(std::size_t part) const;  // closedParts()[part]: for one look
 };
 
 }  // namespace penumbra::scene
