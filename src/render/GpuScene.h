@@ -23,7 +23,7 @@ struct Draw {
     bool moving = false;  // the object is animated: its transform may differ from frame to frame
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
     float farthest = 0;   // distance from the eye to the farthest corner of worldBounds (opaque order)
-    // The part bounds a solid (Mesh::partIsClosed) wound outwards in the world: from outside it
+    // The part bounds a solid (Mesh::closedParts) wound outwards in the world: from outside it
     // only its front faces can be seen.
     bool solid = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
@@ -59,7 +59,7 @@ private:
         gl::Buffer vertices, indices;
         gl::VertexArray vao;
         std::vector<std::vector<MeshCluster>> clusters;  // per part; empty for parts drawn whole
-        // Per part: it bounds a solid (Mesh::partIsClosed).
+        // Per part: it bounds a solid (Mesh::closedParts).
         std::vector<bool> closedParts;
     };
     const scene::Scene& scene_;

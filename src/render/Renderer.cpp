@@ -51,7 +51,6 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
     return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), slots), slots.sun, translucentCasters);
 }
 
-// Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
 // A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
 // camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
 // order puts them first, shades them before the front faces cover them. (An eye inside a solid
@@ -61,6 +60,7 @@ static void cullBackFacesOfSolid(const Draw& d) {
     else glDisable(GL_CULL_FACE);
 }
 
+// Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
 static bool anyTranslucentCaster(const std::vector<Draw>& draws) {
     return std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.castsShadow && d.translucent; });
 }
