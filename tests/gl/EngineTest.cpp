@@ -181,6 +181,9 @@ TEST_P(AlphaTestedCasters, CutOutTexelsCastNoShadow) {
     EXPECT_NEAR(f.at(48, 48).r, 1.0f, 0.05f) << "open ground";
 }
 
+// One technique per kind of depth map: DepthAndTintMaps, LayeredDepthMap, moment maps.
+INSTANTIATE_TEST_SUITE_P(EveryDepthMap, AlphaTestedCasters, ::testing::Values("hard", "cascaded", "vsm"));
+
 // The camera sees through cut-out texels too: only materials with a cutoff get the lighting
 // build with the alpha test (LightingPrograms: the others have no `discard`). World position
 // channel: height 2 on the kept plate, the ground's 0 through the all-holes one.
@@ -191,9 +194,6 @@ TEST(AlphaTestedSurfaces, TheCameraSeesThroughTheirHoles) {
     EXPECT_NEAR(f.at(65, 48).g, 0.0f, 0.01f) << "the ground through the all-holes plate";
     EXPECT_NEAR(f.at(65, 48).r, 2.0f, 0.15f) << "the ground below the all-holes plate's centre";
 }
-
-// One technique per kind of depth map: DepthAndTintMaps, LayeredDepthMap, moment maps.
-INSTANTIATE_TEST_SUITE_P(EveryDepthMap, AlphaTestedCasters, ::testing::Values("hard", "cascaded", "vsm"));
 
 // The depth pre-pass (RenderOptions::depthPrepass) shades each visible pixel once and must
 // change no pixel: overdraw (a sphere behind a box), a plate whose every texel is alpha-tested
