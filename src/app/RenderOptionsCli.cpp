@@ -27,6 +27,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     command.add_flag_callback(
         "--whole-casters", [&options] { options.clusterCasters = false; },
         "draw big meshes whole into every shadow map they reach (default: cull their clusters per cascade, layer and cube face)");
+    command.add_flag_callback(
+        "--both-faces", [&options] { options.cullSolidBackFaces = false; },
+        "draw both faces of closed opaque parts in the camera's opaque passes and the depth maps (default: cull back "
+        "faces; same pixels and maps, less raster work)");
     command.add_flag("--depth-prepass", options.depthPrepass,
                      "draw the opaque surfaces' depth first, then shade each visible pixel once (same pixels; pays with "
                      "overdraw and dear shading, e.g. on a GPU)");

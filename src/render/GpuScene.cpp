@@ -60,7 +60,7 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
             d.moving = !obj.animation.empty();
             // A mirroring transform turns the winding inside out; such parts are drawn whole.
-            d.solid = meshes_[meshIndex].closedParts[p] && glm::determinant(glm::mat3(model)) > 0.0f;
+            d.solid = meshes_[meshIndex].closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

@@ -23,8 +23,10 @@ struct Draw {
     bool moving = false;  // the object is animated: its transform may differ from frame to frame
     float viewDepth = 0;  // for back-to-front sorting of translucent draws
     float farthest = 0;   // distance from the eye to the farthest corner of worldBounds (opaque order)
-    // The part bounds a solid (Mesh::closedParts) wound outwards in the world: from outside it
-    // only its front faces can be seen.
+    // The part bounds a solid (Mesh::closedParts) wound outwards in the world, and its material
+    // has no alpha test: from outside it only its front faces can be seen, and along any ray the
+    // nearest of its surfaces is a front face. (Through an alpha-tested part's holes its inner
+    // faces show.)
     bool solid = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     std::size_t triangles = 0;

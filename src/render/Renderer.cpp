@@ -54,10 +54,25 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
 // A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
 // camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
 // order puts them first, shades them before the front faces cover them. (An eye inside a solid
-// sees through it.)
-static void cullBackFacesOfSolid(const Draw& d) {
-    if (d.solid) glEnable(GL_CULL_FACE);
+// sees through it.) `cull` false: both faces (RenderOptions::cullSolidBackFaces).
+static void cullBackFacesOfSolid(const Draw& d, bool cull) {
+    if (d.solid && cull) glEnable(GL_CULL_FACE);
     else glDisable(GL_CULL_FACE);
+}
+
+// The faces a solid turns away from a pass drawn through `viewProj`, which keeps only the nearest
+// depth (shadows::CasterSelection::nearestDepthThrough). GL tells front from back by the winding
+// in window space. For x -> M x / w the Jacobian's determinant is det(M) / w^4, and clipping keeps
+// w > 0 only, so the sign of det(M) says for every drawn triangle whether M keeps the world's
+// winding: GL's own projections (glm::perspective, glm::ortho) turn the right-handed world into
+// left-handed NDC, det < 0, and the world's counter-clockwise front faces stay counter-clockwise
+// on screen. A transform with det > 0 mirrors them (GL_FRONT is then the face turned away); a
+// degenerate one (a flattening projection) has no back.
+static GLenum facesTurnedAway(const glm::mat4& viewProj) {
+    const float det = glm::determinant(viewProj);
+    const float scale = glm::length(viewProj[0]) * glm::length(viewProj[1]) * glm::length(viewProj[2]) * glm::length(viewProj[3]);
+    if (!(std::abs(det) > 1e-6f * scale)) return GL_NONE;
+    return det < 0.0f ? GL_BACK : GL_FRONT;
 }
 
 // Whether any tint pass has something to draw (SCENE_TRANSLUCENT_CASTERS).
@@ -217,13 +232,19 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.reuseStillCasters = options_.reuseStillCasters;
         frame.translucentCasters = translucentCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
+            const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthThrough
+                                    ? facesTurnedAway(*selection.nearestDepthThrough) : GL_NONE;
+            glCullFace(away == GL_NONE ? GL_BACK : away);
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
+                cullBackFacesOfSolid(d, away != GL_NONE);
                 const std::size_t drawn = selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
                                                          : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
                     shadowTriangles_[static_cast<std::size_t>(selection.light)] += drawn;
             }
+            glCullFace(GL_BACK);
+            glDisable(GL_CULL_FACE);  // as the pass set it (PassState::cullFace is false in every caster pass)
         };
         frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
             for (const Draw& d : draws)
@@ -376,7 +397,7 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     for (const Draw& d : draws) {
         if (!drawn(d)) continue;
         const gl::Program& program = lighting_.of(*d.material, d.translucent);
-        if (!translucent) cullBackFacesOfSolid(d);  // translucent solids show their far side through the near one
+        if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces);  // translucent solids show their far side through the near one
         if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
         else gpu_.draw(d, program);
     }
@@ -402,7 +423,7 @@ void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camer
     const gl::ScopedPassState scope(state);
     for (const Draw& d : draws)
         if (d.visible && !d.translucent && (options_.depthPrepass || !ownObject(d.object))) {
-            cullBackFacesOfSolid(d);
+            cullBackFacesOfSolid(d, options_.cullSolidBackFaces);
             gpu_.draw(d, programs.of(*d.material));
         }
 }

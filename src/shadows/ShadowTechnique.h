@@ -40,11 +40,17 @@ enum class Motion { Any, Still, Moving };
 // outside a light's view volume cannot shadow anything inside it. nullopt draws every caster
 // (passes that project casters elsewhere, layered passes that cull per layer themselves).
 // The triangles drawn are counted for light `light` (-1: not counted).
+// `nearestDepthThrough`: the world-to-clip transform (uLightViewProj) of a pass that keeps only
+// the nearest depth. Along any ray the nearest surface of a solid (render::Draw::solid) is one of
+// its front faces, so such a pass may cull the faces a solid turns away from it: the map is the
+// same, at about half the raster work. nullopt draws both faces of every caster (passes that
+// flatten casters, or colour them through every face).
 struct CasterSelection {
     Casters casters = Casters::Opaque;
     std::optional<glm::mat4> cull;
     int light = -1;
     Motion motion = Motion::Any;
+    std::optional<glm::mat4> nearestDepthThrough;
 };
 
 // The program each caster draw uses: `plain` for most materials, `alphaTested` for materials

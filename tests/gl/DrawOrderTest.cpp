@@ -49,5 +49,23 @@ TEST(DrawOrder, SolidsAreClosedPartsNotMirrored) {
     EXPECT_NEAR(f.at(74, 48).g, 2.0f, 0.01f) << "the mirrored box's top";
 }
 
+// An alpha-tested box is not a solid: through a cut texel of its top the camera sees the kept
+// texels of its bottom from inside. left_half_cut.png cuts u in [0, 0.5) of each repeat; the top's
+// u runs along z, the bottom's along x (Shapes.cpp's box), so the ray through pixel (45, 56)
+// passes the top at u = 0.26 (cut) and meets the bottom at u = 0.73 (kept).
+TEST(DrawOrder, AnAlphaTestedBoxShowsItsInsideThroughItsHoles) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [0, -1, 0] } ],
+      "objects": [ { "name": "ground", "shape": "plane", "size": [20, 20] },
+                   { "name": "box", "shape": "box", "size": [2, 2, 2], "position": [0, 2, 0],
+                     "material": { "texture": "left_half_cut.png", "alpha_cutoff": 0.5 } } ] })");
+    render::GpuScene gpu(s);
+    for (const render::Draw& d : gpu.draws(0.0f, s.camera.position)) EXPECT_FALSE(d.solid) << s.objects[d.object].name;
+    const Frame f = renderChannel(s, render::OutputMode::WorldPosition, 0, 96, 96);
+    EXPECT_NEAR(f.at(45, 56).g, 1.0f, 0.01f) << "the box's bottom, seen from inside";
+    EXPECT_NEAR(f.at(45, 40).g, 3.0f, 0.01f) << "a kept texel of its top";
+}
+
 }  // namespace
 }  // namespace penumbra::test

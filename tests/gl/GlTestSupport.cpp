@@ -54,6 +54,21 @@ scene::Scene sceneFromJson(const std::string& json) {
     return scene::io::parseSceneJson(json, std::filesystem::path(PENUMBRA_TEST_DATA) / "inline.json");
 }
 
+std::vector<float> textureLevels(const shadows::DebugView& view) {
+    std::vector<float> all;
+    for (GLint level = 0;; ++level) {
+        GLint w = 0, h = 0, layers = 1;
+        glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_HEIGHT, &h);
+        if (view.target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_DEPTH, &layers);
+        if (w == 0 || h == 0) return all;
+        const std::size_t channels = view.depth ? 1 : 4, first = all.size();
+        all.resize(first + channels * static_cast<std::size_t>(w * h * layers));
+        glGetTextureImage(view.texture, level, view.depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
+                          static_cast<GLsizei>((all.size() - first) * sizeof(float)), all.data() + first);
+    }
+}
+
 Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int width, int height,
                     const std::string& technique, const shadows::ParameterValues& parameters) {
     render::RenderOptions options;

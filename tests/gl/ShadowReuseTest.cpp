@@ -53,22 +53,6 @@ struct Pair {
     }
 };
 
-// Every level of a texture (every layer of an array), as floats (depth or RGBA).
-std::vector<float> textureLevels(const shadows::DebugView& view) {
-    std::vector<float> all;
-    for (GLint level = 0;; ++level) {
-        GLint w = 0, h = 0, layers = 1;
-        glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_WIDTH, &w);
-        glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_HEIGHT, &h);
-        if (view.target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_DEPTH, &layers);
-        if (w == 0 || h == 0) return all;
-        const std::size_t channels = view.depth ? 1 : 4, first = all.size();
-        all.resize(first + channels * static_cast<std::size_t>(w * h * layers));
-        glGetTextureImage(view.texture, level, view.depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
-                          static_cast<GLsizei>((all.size() - first) * sizeof(float)), all.data() + first);
-    }
-}
-
 // The maps a technique shows in its debug views (2D: depth, tint, moments with their mip levels,
 // CSSM's coloured map) are the same texel for texel: a kept map that the picture hides (a thin
 // moving shadow under a trilinear lookup) still fails.

@@ -150,7 +150,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
         fb.bind();
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
         depthProgram_.set("uLightViewProj", vp);
-        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion});
+        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp});
     };
     if (stillKey == 0) {  // nothing reused: every caster, every frame
         drawInto(m.depthFaces[face], Motion::Any);
@@ -169,7 +169,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     glCopyImageSubData(m.still.id(), target, 0, 0, 0, z, m.depth.id(), target, 0, 0, 0, z, m.resolution, m.resolution, 1);
     m.depthFaces[face].bind();
     depthProgram_.set("uLightViewProj", vp);
-    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving});
+    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp});
     m.depthHolds[face] = 0;
 }
 

@@ -43,7 +43,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         const bool cropped = l < readTexels.size();
         const TexelRect read = cropped ? readTexels[l] : TexelRect(0, 0, res, res);
         const CasterSelection casters{Casters::Opaque, cropped && !isEmpty(read) ? cropTo(read, res) * viewProj[l] : viewProj[l],
-                                      frame.slots->sun};
+                                      frame.slots->sun, Motion::Any, viewProj[l]};
         const std::uint64_t key =
             reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset, read).value()
                   : 0;

@@ -156,7 +156,7 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& d
         const float farDepth = 1.0f;
         glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
         maps_.depthProgram().set("uLightViewProj", space.viewProj[face]);
-        frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i)});
+        frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i), Motion::Any, space.viewProj[face]});
         fullscreenVao_.bind();
         m.multisampledDepth.bind(1);
     }
