@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(cmake ninja-build g++ pkg-config libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev libopengl-dev
   libepoxy-dev libstb-dev libjpeg62-turbo-dev libglm-dev libglfw3-dev libimgui-dev libtinyobjloader-dev libtinygltf-dev
-  libassimp-dev libcli11-dev nlohmann-json3-dev libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libassimp-dev libmeshoptimizer-dev libcli11-dev nlohmann-json3-dev libembree-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth dpkg-dev file libjs-chart.js chromium openscenegraph clang libclang-rt-14-dev)
 
 missing=()

@@ -1,6 +1,7 @@
 #include "render/MeshClusters.h"
 
 #include <algorithm>
+#include <meshoptimizer.h>
 #include <numeric>
 
 namespace penumbra::render {
@@ -36,6 +37,20 @@ void splitAtMedians(std::vector<Centroid>::iterator first, std::vector<Centroid>
     splitAtMedians(middle, last, runs, offset + count / 2);
 }
 
+// Reorders the triangles of `count` indices for the post-transform vertex cache (meshoptimizer's
+// meshopt_optimizeVertexCache, after Forsyth 2006), over the vertices they use alone so that the
+// cost follows the run, not the mesh.
+void orderForVertexReuse(std::uint32_t* indices, std::size_t count) {
+    std::vector<std::uint32_t> used(indices, indices + count);
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    std::vector<std::uint32_t> local(count), ordered(count);
+    for (std::size_t i = 0; i < count; ++i)
+        local[i] = static_cast<std::uint32_t>(std::lower_bound(used.begin(), used.end(), indices[i]) - used.begin());
+    meshopt_optimizeVertexCache(ordered.data(), local.data(), count, used.size());
+    for (std::size_t i = 0; i < count; ++i) indices[i] = used[ordered[i]];
+}
+
 std::vector<MeshCluster> clusterPart(const scene::Mesh& mesh, const scene::MeshPart& part, std::vector<std::uint32_t>& indices) {
     const std::uint32_t triangles = part.indexCount / 3;
     const auto corner = [&](std::uint32_t t, int k) {
@@ -55,6 +70,7 @@ std::vector<MeshCluster> clusterPart(const scene::Mesh& mesh, const scene::MeshP
                     mesh.indices[part.firstIndex + 3 * order[i].triangle + static_cast<std::uint32_t>(k)];
                 c.bounds.add(corner(order[i].triangle, k));
             }
+        orderForVertexReuse(indices.data() + c.firstIndex, c.indexCount);
         clusters.push_back(c);
     }
     return clusters;

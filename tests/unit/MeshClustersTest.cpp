@@ -1,5 +1,6 @@
-// MeshClusters: a big part's triangles are reordered into spatially compact clusters; culling
-// them against a clip volume must keep every triangle that reaches the volume.
+// MeshClusters: a big part's triangles are reordered into spatially compact clusters, each in an
+// order that reuses transformed vertices; culling them against a clip volume must keep every
+// triangle that reaches the volume.
 #include "render/MeshClusters.h"
 #include "scene/Shapes.h"
 
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <glm/gtc/matrix_transform.hpp>
+#include <meshoptimizer.h>
 
 namespace penumbra::render {
 namespace {
@@ -53,6 +55,22 @@ TEST(MeshClusters, ABigPartKeepsItsTrianglesInClustersThatBoundThem) {
         EXPECT_LT(glm::length(cl.bounds.extent()), 1.8f) << "cluster at " << cl.firstIndex << " is not compact";
     }
     EXPECT_EQ(next, mesh.indices.size());
+}
+
+// Each cluster's triangles come in an order that reuses transformed vertices: the median splits
+// leave them shuffled along one axis, and llvmpipe (like a GPU) shades a vertex again whenever
+// it has left its small cache. Cache misses per triangle through a 16-entry FIFO
+// (meshopt_analyzeVertexCache; about 0.5 for a long regular grid, 3 for no reuse): measured,
+// at most 0.68 per cluster of this sphere, 1.45 in the median splits' order and 1.00 in the
+// sphere's own row order.
+TEST(MeshClusters, EachClusterReusesItsTransformedVertices) {
+    const scene::Mesh mesh = bigSphere();
+    const ClusteredIndices c = clusterMesh(mesh);
+    for (const MeshCluster& cl : c.clusters[0]) {
+        const meshopt_VertexCacheStatistics s =
+            meshopt_analyzeVertexCache(c.indices.data() + cl.firstIndex, cl.indexCount, mesh.vertices.size(), 16, 0, 0);
+        EXPECT_LT(s.acmr, 0.75f) << "cluster at " << cl.firstIndex;
+    }
 }
 
 TEST(MeshClusters, SmallPartsStayWholeAndInOrder) {
