@@ -30,7 +30,7 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
     command.add_flag_callback(
         "--both-faces", [&options] { options.cullSolidBackFaces = false; },
         "draw both faces of closed opaque parts in the camera's opaque passes and the depth maps (default: cull back "
-        "faces; same pixels and maps, less raster work)");
+        "faces; the same pixels and maps but for a few silhouette texels, less raster work)");
     command.add_flag("--depth-prepass", options.depthPrepass,
                      "draw the opaque surfaces' depth first, then shade each visible pixel once (same pixels; pays with "
                      "overdraw and dear shading, e.g. on a GPU)");

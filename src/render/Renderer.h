@@ -69,8 +69,9 @@ struct RenderOptions {
     // dragon, PCSS); on llvmpipe's default scene it cost more than it saved. Same pixels.
     bool depthPrepass = false;
     // Cull the back faces of solids (Draw::solid) in the camera's opaque passes and in the depth
-    // maps of every light: the same pixels and the same maps at less raster work. false draws
-    // both faces everywhere, for measuring what culling saves (`--both-faces`).
+    // maps of every light: the same pixels and maps at less raster work, but for a few silhouette
+    // texels where a polygon offset pushes a front face seen edge-on behind the back face next to
+    // it. false draws both faces everywhere, for measuring what culling saves (`--both-faces`).
     bool cullSolidBackFaces = true;
     // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
     // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
