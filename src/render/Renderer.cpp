@@ -248,8 +248,11 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         };
         frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
             for (const Draw& d : draws)
-                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject)))
+                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
+                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces);  // seen from the camera, as drawSurfaces is
                     gpu_.draw(d, programs.of(*d.material));
+                }
+            glDisable(GL_CULL_FACE);
         };
         frame.scene = &scene_;
         frame.time = time;

@@ -107,7 +107,8 @@ struct ShadowFrame {
     bool translucentCasters = true;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0), each
     // with its material's program of `programs` bound: depth pre-passes and receiver masks of
-    // screen-space techniques.
+    // screen-space techniques. Through the camera's view-projection only: solids' back faces are
+    // culled as in the camera's own passes.
     std::function<void(DrawPrograms programs, int onlyObject)> drawSurfaces;
     const scene::Scene* scene = nullptr;  // geometry-based techniques (shadow volumes, planar)
     float time = 0.0f;                    // scene time of the frame (object transforms)

@@ -84,6 +84,15 @@ std::string testNameOf(std::string technique) {
     return technique;
 }
 
+render::RenderOptions optionsFor(const std::string& technique) {
+    render::RenderOptions o;
+    const std::size_t colon = technique.find(':'), equals = technique.find('=');
+    o.technique = technique.substr(0, colon);
+    if (colon != std::string::npos)
+        o.parameters.emplace_back(technique.substr(colon + 1, equals - colon - 1), technique.substr(equals + 1));
+    return o;
+}
+
 Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height) {
     render::Renderer renderer(scene, options);
     render::OffscreenTarget target(width, height);

@@ -27,6 +27,9 @@ scene::Scene sceneFromJson(const std::string& json);
 // A technique's name as a gtest parameter name: '-' is not allowed there ("pcf-bilinear" -> "pcf_bilinear").
 std::string testNameOf(std::string technique);
 
+// Options for a technique that may carry one parameter: "cssm2:xi=white".
+render::RenderOptions optionsFor(const std::string& technique);
+
 // Renders `scene` at time 0 from its camera with `options` and returns the linear picture.
 Frame renderFrame(scene::Scene& scene, const render::RenderOptions& options, int width, int height);
 

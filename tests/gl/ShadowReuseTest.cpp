@@ -34,13 +34,8 @@ struct Pair {
     render::OffscreenTarget target{64, 64};
     Pair(scene::Scene& s, const std::string& technique)
         : reusing(s, options(technique, true)), redrawing(s, options(technique, false)) {}
-    // `technique` may carry one parameter: "cssm2:xi=white".
     static render::RenderOptions options(const std::string& technique, bool reuse) {
-        render::RenderOptions o;
-        const std::size_t colon = technique.find(':'), equals = technique.find('=');
-        o.technique = technique.substr(0, colon);
-        if (colon != std::string::npos)
-            o.parameters.emplace_back(technique.substr(colon + 1, equals - colon - 1), technique.substr(equals + 1));
+        render::RenderOptions o = optionsFor(technique);
         o.reuseStillCasters = reuse;
         return o;
     }

@@ -13,6 +13,7 @@
 
 #include "render/Offscreen.h"
 
+#include <cctype>
 #include <cmath>
 
 namespace penumbra::test {
@@ -41,8 +42,7 @@ class SolidCulling : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SolidCulling, LeavesEveryMapAndPixelAsDrawingBothFaces) {
     scene::Scene s = solids();
-    render::RenderOptions culling;
-    culling.technique = GetParam();
+    render::RenderOptions culling = optionsFor(GetParam());
     render::RenderOptions both = culling;
     both.cullSolidBackFaces = false;
     render::Renderer a(s, culling), b(s, both);
@@ -69,8 +69,15 @@ TEST_P(SolidCulling, LeavesEveryMapAndPixelAsDrawingBothFaces) {
     EXPECT_EQ(differing, 0u) << "channel values of the picture";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryDepthMap, SolidCulling, ::testing::Values("hard", "cascaded", "lispsm", "psm", "vsm", "cssm2"),
-                         [](const auto& info) { return testNameOf(info.param); });
+// The last three draw the camera's view too (ShadowFrame::drawSurfaces): the shadow volumes'
+// and the planar shadows' screen masks, cascaded's depth-bounds pre-pass (sdsm).
+INSTANTIATE_TEST_SUITE_P(EveryDepthMap, SolidCulling,
+                         ::testing::Values("hard", "cascaded", "lispsm", "psm", "vsm", "cssm2", "shadow-volumes", "planar", "cascaded:sdsm=true"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace penumbra::test
