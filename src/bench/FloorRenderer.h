@@ -1,6 +1,7 @@
 #pragma once
 // The floor the bench measures every technique against: the same triangles drawn the least
-// expensive way a shadowed frame can be drawn, with none of the renderer's generality.
+// expensive way a shadowed frame can be drawn, with none of the renderer's generality. Like the
+// renderer, it culls solids' back faces (render::Draw::solid) in both passes.
 // - DepthOnly: one depth-only raster of every caster into the first light's map.
 // - Lambert: that, then one camera pass of Lambert times one sampler2DShadow lookup into RGBA8.
 // - Unshadowed: the camera pass of Lambert alone, no map: the floor of a shadowless frame.
