@@ -53,36 +53,57 @@ struct CasterSelection {
     std::optional<glm::mat4> nearestDepthThrough;
 };
 
-// The program each caster draw uses: `plain` for most materials, `alphaTested` for materials
-// with an alpha cutoff (MASK). Depth passes keep the alpha test's `discard` out of `plain`: a
-// fragment stage that may discard costs llvmpipe its early depth write for every fragment
-// (measured, default scene: hard's shadow pass 16.5 -> 11.3 ms). A single program converts to
-// both.
+// The program each caster draw uses: `plain` for materials whose texture the pass need not
+// read, `textured` for the others. Depth passes read it only for an alpha test (materials with a
+// cutoff, MASK) and keep the test's `discard` out of `plain`: a fragment stage that may discard
+// costs llvmpipe its early depth write for every fragment (measured, default scene: hard's
+// shadow pass 16.5 -> 11.3 ms). Passes that weigh light by coverage (the tint's transmittance)
+// read the texture's alpha for any textured material (`coverageFromTexture`), and `plain` leaves
+// the sample out: llvmpipe samples under a false uniform branch all the same (measured, default
+// scene with every map redrawn: hard's shadow pass 61-63 -> 35-37 ms, the glass's tint in the
+// projector's 2048^2 map). A single program converts to both.
 struct DrawPrograms {
-    DrawPrograms(const gl::Program& both) : plain(&both), alphaTested(&both) {}  // NOLINT: implicit by design
-    DrawPrograms(const gl::Program& plainProgram, const gl::Program& alphaTestedProgram)
-        : plain(&plainProgram), alphaTested(&alphaTestedProgram) {}
-    const gl::Program& of(const scene::Material& m) const { return m.alphaCutoff > 0.0f ? *alphaTested : *plain; }
+    DrawPrograms(const gl::Program& both) : plain(&both), textured(&both) {}  // NOLINT: implicit by design
+    DrawPrograms(const gl::Program& plainProgram, const gl::Program& texturedProgram, bool coverageFromTexture)
+        : plain(&plainProgram), textured(&texturedProgram), coverageFromTexture(coverageFromTexture) {}
+    const gl::Program& of(const scene::Material& m) const {
+        return m.alphaCutoff > 0.0f || (coverageFromTexture && m.diffuseTexture >= 0) ? *textured : *plain;
+    }
     const gl::Program* plain;
-    const gl::Program* alphaTested;
+    const gl::Program* textured;
+    bool coverageFromTexture = false;
 };
 
-// Opaque casters into depth alone (shadows/common/glsl/depth.frag), as a pair: an empty fragment
-// stage for most materials and the alpha test for alpha-tested ones (see DrawPrograms for why
-// they differ). Uniforms set here reach both. The shadow passes draw casters with it, and the
-// renderer its camera depth pre-pass (render/Renderer.cpp).
-class DepthCasterProgram {
+// A caster program's two builds for DrawPrograms. Uniforms set here reach both.
+class CasterProgramPair {
 public:
-    DepthCasterProgram();
+    CasterProgramPair(const gl::ProgramDesc& plain, const gl::ProgramDesc& textured, bool coverageFromTexture);
     template <class T>
     void set(const char* name, const T& value) const {
         plain_.set(name, value);
-        alphaTested_.set(name, value);
+        textured_.set(name, value);
     }
-    operator DrawPrograms() const { return {plain_, alphaTested_}; }  // NOLINT: implicit by design
+    operator DrawPrograms() const { return {plain_, textured_, coverageFromTexture_}; }  // NOLINT: implicit by design
 
 private:
-    gl::Program plain_, alphaTested_;
+    gl::Program plain_, textured_;
+    bool coverageFromTexture_;
+};
+
+// Opaque casters into depth alone (shadows/common/glsl/depth.frag): an empty fragment stage for
+// most materials, the alpha test for alpha-tested ones (see DrawPrograms for why they differ).
+// The shadow passes draw casters with it, and the renderer its camera depth pre-pass
+// (render/Renderer.cpp).
+class DepthCasterProgram : public CasterProgramPair {
+public:
+    DepthCasterProgram();
+};
+
+// Translucent casters' transmittance into a tint map (shadows/common/glsl/transmit.frag): a build
+// without the texture for untextured materials (see DrawPrograms).
+class TintCasterProgram : public CasterProgramPair {
+public:
+    TintCasterProgram();
 };
 
 // What the renderer gives a technique for one frame.

@@ -195,6 +195,29 @@ TEST(AlphaTestedSurfaces, TheCameraSeesThroughTheirHoles) {
     EXPECT_NEAR(f.at(65, 48).r, 2.0f, 0.15f) << "the ground below the all-holes plate's centre";
 }
 
+// A translucent caster's texture alpha weighs the light it stops (coverage, McGuire & Enderton
+// 2011): the tint pass draws textured materials with the build that samples their texture, and
+// only untextured ones with the build that leaves the sample out (TintCasterProgram). The plate
+// has no transmission, so a kept texel (alpha 1) stops all light and a cut one (alpha 0) none;
+// left_half_cut.png's columns make stripes along z, which the sun (along +x) casts unchanged.
+class TexturedTranslucentCasters : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheLightTheyStop) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+        { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "left_half_cut.png" } } ] })");
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, GetParam());
+    // Ground x = -2 is pixel 30; z = -0.76 is pixel 54 (u = 0.24, a cut texel), z = -0.29 pixel 50
+    // (u = 0.71, bilinearly 0.92 of a kept texel: 0.08 of the light passes).
+    EXPECT_NEAR(f.at(30, 54).r, 1.0f, 0.05f) << "under a cut texel";
+    EXPECT_NEAR(f.at(30, 50).r, 0.08f, 0.05f) << "under a kept texel";
+    EXPECT_NEAR(f.at(70, 48).r, 1.0f, 0.05f) << "open ground";
+}
+
+INSTANTIATE_TEST_SUITE_P(TintMaps, TexturedTranslucentCasters, ::testing::Values("hard", "cascaded", "vsm", "cssm2"));
+
 // The depth pre-pass (RenderOptions::depthPrepass) shades each visible pixel once and must
 // change no pixel: overdraw (a sphere behind a box), a plate whose every texel is alpha-tested
 // away in front of both (the pre-pass must leave its holes too), a green pane (translucent pass

@@ -39,10 +39,7 @@ std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, c
 
 }  // namespace
 
-DepthAndTintMaps::DepthAndTintMaps(bool withTint, TintAlpha tintAlpha) : withTint_(withTint), tintAlpha_(tintAlpha) {
-    tintProgram_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
-                                       .fragment = "src/shadows/common/glsl/transmit.frag"});
-}
+DepthAndTintMaps::DepthAndTintMaps(bool withTint, TintAlpha tintAlpha) : withTint_(withTint), tintAlpha_(tintAlpha) {}
 
 void DepthAndTintMaps::setWithTint(bool withTint) {
     if (withTint == withTint_) return;

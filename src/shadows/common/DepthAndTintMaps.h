@@ -145,7 +145,7 @@ private:
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
-    gl::Program tintProgram_;
+    TintCasterProgram tintProgram_;
     gl::Program farthestAround_;  // built with the first FarthestAround map
     gl::VertexArray fullscreenVao_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison

@@ -2,13 +2,19 @@
 
 namespace penumbra::shadows {
 
-DepthCasterProgram::DepthCasterProgram() {
-    const gl::ProgramDesc plain{.vertex = "src/shadows/common/glsl/caster.vert",
-                                   .fragment = "src/shadows/common/glsl/depth.frag"};
-    gl::ProgramDesc alphaTested = plain;
-    alphaTested.defines = {"ALPHA_TEST 1"};
-    plain_ = gl::Program::build(plain);
-    alphaTested_ = gl::Program::build(alphaTested);
+CasterProgramPair::CasterProgramPair(const gl::ProgramDesc& plain, const gl::ProgramDesc& textured, bool coverageFromTexture)
+    : plain_(gl::Program::build(plain)), textured_(gl::Program::build(textured)), coverageFromTexture_(coverageFromTexture) {}
+
+static gl::ProgramDesc withDefine(gl::ProgramDesc desc, const char* define) {
+    desc.defines.emplace_back(define);
+    return desc;
 }
+
+static const gl::ProgramDesc kDepth{.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/depth.frag"};
+static const gl::ProgramDesc kTint{.vertex = "src/shadows/common/glsl/caster.vert", .fragment = "src/shadows/common/glsl/transmit.frag"};
+
+DepthCasterProgram::DepthCasterProgram() : CasterProgramPair(kDepth, withDefine(kDepth, "ALPHA_TEST 1"), false) {}
+
+TintCasterProgram::TintCasterProgram() : CasterProgramPair(withDefine(kTint, "MATERIAL_UNTEXTURED 1"), kTint, true) {}
 
 }  // namespace penumbra::shadows
