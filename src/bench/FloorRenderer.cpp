@@ -8,14 +8,6 @@
 
 namespace penumbra::bench {
 
-// Solids' back faces culled, as the renderer culls them (render::Draw::solid): the floor must not
-// draw more than the renderer does. Both passes' projections keep GL's winding (det < 0).
-static void drawCullingSolids(const render::GpuScene& gpu, const render::Draw& d, const gl::Program& program) {
-    if (d.solid) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
-    gpu.draw(d, program);
-}
-
 FloorRenderer::FloorRenderer(const scene::Scene& scene, Mode mode, int shadowResolution)
     : scene_(scene), mode_(mode), resolution_(shadowResolution), gpu_(scene) {
     if (scene.lights.empty()) throw std::invalid_argument("the floor passes need a scene with at least one light");
@@ -57,7 +49,10 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
         depthProgram_.set("uViewProj", space.viewProj[0]);
         for (const render::Draw& d : draws)
             if (d.castsShadow) {
-                drawCullingSolids(gpu_, d, depthProgram_);
+                // Solids' back faces culled in both passes, as the renderer culls them: the floor
+                // must not draw more than the renderer does. Both projections keep GL's winding.
+                render::cullBackFacesOfSolid(d);
+                gpu_.draw(d, depthProgram_);
                 triangles_ += d.triangles;
             }
     }
@@ -81,7 +76,10 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
         lambertProgram_.set("uToLight", glm::normalize(toLight));
         lambertProgram_.set("uBias", 0.002f);
         for (const render::Draw& d : draws)
-            if (d.visible && !d.translucent) drawCullingSolids(gpu_, d, lambertProgram_);
+            if (d.visible && !d.translucent) {
+                render::cullBackFacesOfSolid(d);
+                gpu_.draw(d, lambertProgram_);
+            }
         gl::Sampler::unbind(gpu::kUnitShadow2D);
         glUseProgram(0);  // likewise for whatever clears next
     }

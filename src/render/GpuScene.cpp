@@ -152,4 +152,9 @@ void GpuScene::addSurfaceBounds(const Draw& d, std::vector<scene::Bounds>& out) 
     for (const MeshCluster& c : clusters[d.part]) out.push_back(c.bounds.transformed(d.model));
 }
 
+void cullBackFacesOfSolid(const Draw& d, bool cull) {
+    if (d.solid && cull) glEnable(GL_CULL_FACE);
+    else glDisable(GL_CULL_FACE);
+}
+
 }  // namespace penumbra::render

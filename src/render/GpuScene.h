@@ -70,6 +70,13 @@ private:
     mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 
+// A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
+// camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
+// order puts them first, shades them before the front faces cover them. (An eye inside a solid
+// sees through it.) Enables GL_CULL_FACE for `d` when it is a solid and `cull` is set, disables
+// it otherwise (`cull` false: both faces, RenderOptions::cullSolidBackFaces).
+void cullBackFacesOfSolid(const Draw& d, bool cull = true);
+
 // Uploads an RGBA8 image with mipmaps (sRGB when it holds colour), trilinear, with at most
 // `anisotropy` anisotropic samples.
 gl::Texture uploadImage(const scene::Image& image, float anisotropy = 1.0f);

@@ -51,15 +51,6 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
     return lightLayoutDefines(packLights(lights, std::vector<shadows::LightSpace>(lights.size()), slots), slots.sun, translucentCasters);
 }
 
-// A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
-// camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
-// order puts them first, shades them before the front faces cover them. (An eye inside a solid
-// sees through it.) `cull` false: both faces (RenderOptions::cullSolidBackFaces).
-static void cullBackFacesOfSolid(const Draw& d, bool cull) {
-    if (d.solid && cull) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
-}
-
 // The faces a solid turns away from a pass drawn through `viewProj`, which keeps only the nearest
 // depth (shadows::CasterSelection::nearestDepthThrough). GL tells front from back by the winding
 // in window space. For x -> M x / w the Jacobian's determinant is det(M) / w^4, and clipping keeps
