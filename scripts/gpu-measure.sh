@@ -29,6 +29,8 @@ if [ -f bench/assets/dragon_vrip.ply ]; then
     dragon=none,hard,cssm2,cssm1,pcf-poisson16,pcss,cascaded,lispsm,psm,vsm,msm,floor-depth,floor-lambert,floor-unshadowed
     step "dragon" 120 penumbra bench bench/dragon.json --techniques $dragon "${hd[@]}" "${short[@]}" --out "$work/dragon"
     step "dragon, maps redrawn" 120 penumbra bench bench/dragon.json --techniques $dragon "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/dragon-redrawn"
+    # Culling solids' back faces (the default) against drawing both, where triangles dominate.
+    step "dragon, maps redrawn, both faces" 90 penumbra bench bench/dragon.json --techniques none,hard,cascaded,lispsm "${hd[@]}" --redraw-shadow-maps --both-faces "${short[@]}" --out "$work/dragon-both"
 else
     echo "=== dragon: skipped (bench/assets/dragon_vrip.ply missing: scripts/fetch-assets.sh)" >>"$log"
 fi

@@ -453,15 +453,19 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
     overlay_.use();
     emptyVao_.bind();
     overlaySampler_.bind(0);
+    overlaySampler_.bind(1);
     for (const auto& view : views) {
-        if (view.target != GL_TEXTURE_2D || x + size > width) continue;
+        const bool layered = view.target == GL_TEXTURE_2D_ARRAY;
+        if ((view.target != GL_TEXTURE_2D && !layered) || x + size > width) continue;
         glViewport(x, 8, size, size);
-        glBindTextureUnit(0, view.texture);
+        glBindTextureUnit(layered ? 1 : 0, view.texture);
         overlay_.set("uIsDepth", view.depth ? 1 : 0);
+        overlay_.set("uLayer", layered ? view.layer : -1);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         x += size + 8;
     }
     gl::Sampler::unbind(0);
+    gl::Sampler::unbind(1);
     glViewport(0, 0, width, height);
 }
 

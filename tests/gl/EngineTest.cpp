@@ -421,5 +421,52 @@ TEST_P(DebugOutput, EveryLightTypeIsClean) {
 INSTANTIATE_TEST_SUITE_P(Techniques, DebugOutput, ::testing::ValuesIn(techniqueNames()),
                          [](const auto& info) { return testNameOf(info.param); });
 
+// The overlay shows each light's screen mask (a layer of one R8 array; ScreenShadowMask keeps no
+// 2D views of it, which an NVIDIA driver read back wrong) as grey tiles along the bottom, left to
+// right in debugViews() order: 8 px margins, tiles min(w, h) / 4 wide, sampled bilinearly.
+TEST(DebugOverlay, ShowsEachLightsScreenMaskLayerAsGrey) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 6, 7], "target": [0, 0.5, 0] },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3] },
+                  { "type": "spot", "position": [2, 4, 1], "direction": [-0.5, -1, -0.2], "angle_deg": 70 } ],
+      "objects": [ { "shape": "plane", "size": [12, 12] },
+                   { "shape": "box", "size": [1, 1.5, 1], "position": [-1, 0.75, 0] },
+                   { "shape": "sphere", "radius": 0.7, "position": [1, 1, -1] } ] })");
+    render::RenderOptions options = optionsFor("shadow-volumes");
+    options.debugOverlay = true;
+    constexpr int size = 256, tile = size / 4, margin = 8;
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(size, size);
+    renderer.render(0.0f, s.camera, size, size, target.framebuffer());
+    const std::vector<std::uint8_t> picture = target.readRgba8();
+    const auto views = renderer.technique().debugViews();
+    ASSERT_EQ(views.size(), 2u);
+    std::vector<std::vector<float>> masks;
+    for (const auto& view : views) masks.push_back(textureLevels(view));
+    ASSERT_NE(masks[0], masks[1]) << "the two lights' masks must differ for the tiles to tell them apart";
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        const std::vector<float>& mask = masks[k];
+        ASSERT_EQ(mask.size(), std::size_t{size} * size * 4) << views[k].label;
+        auto texel = [&](int x, int y) { return mask[(static_cast<std::size_t>(y) * size + x) * 4]; };
+        std::size_t checked[2] = {0, 0}, wrong = 0, coloured = 0;
+        for (int ty = 0; ty < tile; ++ty)
+            for (int tx = 0; tx < tile; ++tx) {
+                // The tile's pixel centre samples the mask midway between texels 4t+1 and 4t+2.
+                const int mx = 4 * tx + 1, my = 4 * ty + 1;
+                const float v = texel(mx, my);
+                if (texel(mx + 1, my) != v || texel(mx, my + 1) != v || texel(mx + 1, my + 1) != v) continue;
+                const int gx = margin + static_cast<int>(k) * (tile + margin) + tx, gy = margin + ty;  // GL: from the bottom
+                const std::uint8_t* px = &picture[(static_cast<std::size_t>(size - 1 - gy) * size + gx) * 4];
+                coloured += px[0] != px[1] || px[1] != px[2];
+                wrong += std::abs(px[0] - v * 255.0f) > 2.0f;
+                ++checked[v > 0.5f];
+            }
+        EXPECT_GT(checked[0], 20u) << views[k].label << ": shadowed texels seen";
+        EXPECT_GT(checked[1], 20u) << views[k].label << ": lit texels seen";
+        EXPECT_EQ(wrong, 0u) << views[k].label;
+        EXPECT_EQ(coloured, 0u) << views[k].label;
+    }
+}
+
 }  // namespace
 }  // namespace penumbra::test

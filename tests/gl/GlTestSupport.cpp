@@ -57,15 +57,16 @@ scene::Scene sceneFromJson(const std::string& json) {
 std::vector<float> textureLevels(const shadows::DebugView& view) {
     std::vector<float> all;
     for (GLint level = 0;; ++level) {
-        GLint w = 0, h = 0, layers = 1;
+        GLint w = 0, h = 0;
         glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_WIDTH, &w);
         glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_HEIGHT, &h);
-        if (view.target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(view.texture, level, GL_TEXTURE_DEPTH, &layers);
         if (w == 0 || h == 0) return all;
         const std::size_t channels = view.depth ? 1 : 4, first = all.size();
-        all.resize(first + channels * static_cast<std::size_t>(w * h * layers));
-        glGetTextureImage(view.texture, level, view.depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
-                          static_cast<GLsizei>((all.size() - first) * sizeof(float)), all.data() + first);
+        all.resize(first + channels * static_cast<std::size_t>(w * h));
+        // An array's view is its one layer, as the overlay shows it.
+        const GLint layer = view.target == GL_TEXTURE_2D_ARRAY ? view.layer : 0;
+        glGetTextureSubImage(view.texture, level, 0, 0, layer, w, h, 1, view.depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT,
+                             static_cast<GLsizei>((all.size() - first) * sizeof(float)), all.data() + first);
     }
 }
 

@@ -41,7 +41,7 @@ Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light = 0,
 // with `options` (the reference against which split and region views are compared).
 std::vector<std::uint8_t> renderRgba8(scene::Scene& scene, const render::RenderOptions& options, int width, int height);
 
-// Every level of a debug view's texture (every layer of an array), as floats: one per texel of a
+// Every level of a debug view's texture (of an array, the view's layer), as floats: one per texel of a
 // depth view, four (RGBA) of a colour one.
 std::vector<float> textureLevels(const shadows::DebugView& view);
 

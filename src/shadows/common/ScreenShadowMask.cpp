@@ -19,10 +19,11 @@ void ScreenShadowMask::begin(const ShadowFrame& frame) {
         layerCount_ = lights;
         mask_ = gl::Texture::create2DArray(GL_R8, size_.x, size_.y, lights);
         mask_.setFilter(GL_NEAREST, GL_NEAREST);
+        const GLint grey[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};  // the overlay shows visibility as grey, not red
+        glTextureParameteriv(mask_.id(), GL_TEXTURE_SWIZZLE_RGBA, grey);
         depth_ = gl::Texture::create2D(GL_DEPTH24_STENCIL8, size_.x, size_.y);
         depth_.setFilter(GL_NEAREST, GL_NEAREST);
         layers_.clear();
-        layerViews_.clear();
         for (int i = 0; i < lights; ++i) {
             gl::Framebuffer fb;
             fb.attachLayer(GL_COLOR_ATTACHMENT0, mask_, i);
@@ -30,9 +31,6 @@ void ScreenShadowMask::begin(const ShadowFrame& frame) {
             fb.setDrawBuffers({GL_COLOR_ATTACHMENT0});
             fb.checkComplete("screen shadow mask");
             layers_.push_back(std::move(fb));
-            layerViews_.push_back(gl::Texture::view2D(mask_, GL_R8, i));
-            const GLint grey[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};  // the overlay shows visibility as grey, not red
-            glTextureParameteriv(layerViews_.back().id(), GL_TEXTURE_SWIZZLE_RGBA, grey);
         }
     }
     const scene::Camera& cam = *frame.camera;
@@ -72,10 +70,14 @@ void ScreenShadowMask::bind(const gl::Program& lighting) const {
     lighting.set("uScreenMaskDepthRange", depthRange_);
 }
 
+// The array's layers themselves, not 2D texture views of them. On an H100 (driver 580.159.04),
+// views made once when the array was allocated read back, in some runs, values this mask never
+// holds (neither 0 nor 1), for one layer or the other, while the array itself (sampled by the
+// lighting pass, or read directly) and views made just before reading held the right ones.
 std::vector<DebugView> ScreenShadowMask::debugViews() const {
     std::vector<DebugView> views;
-    for (std::size_t i = 0; i < layerViews_.size() && i < 2; ++i)
-        views.push_back({"screen mask, light " + std::to_string(i), layerViews_[i].id(), GL_TEXTURE_2D, false, 0});
+    for (int i = 0; i < std::min(layerCount_, 2) && mask_.id() != 0; ++i)
+        views.push_back({"screen mask, light " + std::to_string(i), mask_.id(), GL_TEXTURE_2D_ARRAY, false, i});
     return views;
 }
 

@@ -28,7 +28,6 @@ public:
 
 private:
     gl::Texture mask_, depth_;
-    std::vector<gl::Texture> layerViews_;
     std::vector<gl::Framebuffer> layers_;
     glm::ivec2 size_{0};
     int layerCount_ = 0;
