@@ -52,7 +52,7 @@ static std::vector<std::string> initialLightLayout(const std::vector<scene::Ligh
 }
 
 // The faces a solid turns away from a pass drawn through `viewProj`, which keeps only the nearest
-// depth (shadows::CasterSelection::nearestDepthThrough). GL tells front from back by the winding
+// depth (shadows::CasterSelection::nearestDepthOnly). GL tells front from back by the winding
 // in window space. For x -> M x / w the Jacobian's determinant is det(M) / w^4, and clipping keeps
 // w > 0 only, so the sign of det(M) says for every drawn triangle whether M keeps the world's
 // winding: GL's own projections (glm::perspective, glm::ortho) turn the right-handed world into
@@ -223,8 +223,12 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.reuseStillCasters = options_.reuseStillCasters;
         frame.translucentCasters = translucentCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
-            const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthThrough
-                                    ? facesTurnedAway(*selection.nearestDepthThrough) : GL_NONE;
+            if (selection.lightViewProj) {
+                programs.plain->set("uLightViewProj", *selection.lightViewProj);
+                programs.textured->set("uLightViewProj", *selection.lightViewProj);
+            }
+            const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthOnly && selection.lightViewProj
+                                    ? facesTurnedAway(*selection.lightViewProj) : GL_NONE;
             glCullFace(away == GL_NONE ? GL_BACK : away);
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;

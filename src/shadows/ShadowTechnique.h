@@ -40,17 +40,19 @@ enum class Motion { Any, Still, Moving };
 // outside a light's view volume cannot shadow anything inside it. nullopt draws every caster
 // (passes that project casters elsewhere, layered passes that cull per layer themselves).
 // The triangles drawn are counted for light `light` (-1: not counted).
-// `nearestDepthThrough`: the world-to-clip transform (uLightViewProj) of a pass that keeps only
-// the nearest depth. Along any ray the nearest surface of a solid (render::Draw::solid) is one of
-// its front faces, so such a pass may cull the faces a solid turns away from it: the map is the
-// same, at about half the raster work. nullopt draws both faces of every caster (passes that
-// flatten casters, or colour them through every face).
+// `lightViewProj`: the world-to-clip transform the casters are drawn through; drawCasters sets it
+// as the programs' uLightViewProj (nullopt: the caller sets what its programs need).
+// `nearestDepthOnly`: the pass keeps only the nearest depth. Along any ray the nearest surface of
+// a solid (render::Draw::solid) is one of its front faces, so such a pass culls the faces a solid
+// turns away from lightViewProj: the map is the same, at about half the raster work. Passes that
+// flatten casters, or colour them through every face, draw both faces.
 struct CasterSelection {
     Casters casters = Casters::Opaque;
     std::optional<glm::mat4> cull;
     int light = -1;
     Motion motion = Motion::Any;
-    std::optional<glm::mat4> nearestDepthThrough;
+    std::optional<glm::mat4> lightViewProj;
+    bool nearestDepthOnly = false;
 };
 
 // The program each caster draw uses: `plain` for materials whose texture the pass need not
@@ -111,9 +113,9 @@ struct ShadowFrame {
     const std::vector<scene::Light>* lights = nullptr;
     const std::vector<LightSpace>* lightSpaces = nullptr;  // one per light
     const ShadowSlots* slots = nullptr;                    // this frame's slots and sun, one per light
-    // Draws the selected casters, each with its material's program of `programs` bound (uModel
-    // and material uniforms are set, the diffuse texture is on unit 0); the caller sets the
-    // light's matrices.
+    // Draws the selected casters, each with its material's program of `programs` bound (uModel,
+    // uLightViewProj when the selection names it, and material uniforms are set, the diffuse
+    // texture is on unit 0); the caller sets any other matrix its programs read.
     std::function<void(DrawPrograms programs, const CasterSelection& selection)> drawCasters;
     // The world bounds of the casters `drawCasters` would draw for `selection` (empty: none), so
     // that passes over a map can be limited to where those casters can have written.

@@ -1,5 +1,5 @@
 // Depth maps cull the faces solids turn away from the light (shadows::CasterSelection::
-// nearestDepthThrough, Renderer's facesTurnedAway): along any ray the nearest surface of a solid
+// nearestDepthOnly, Renderer's facesTurnedAway): along any ray the nearest surface of a solid
 // is a front face, so the maps, and the pictures, must be those of drawing both faces
 // (RenderOptions::cullSolidBackFaces = false), texel for texel. Culling the wrong faces (a
 // projection whose winding was misjudged) leaves each solid's far side in the map: measured,

@@ -146,8 +146,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     const auto drawInto = [&](const gl::Framebuffer& fb, Motion motion) {
         fb.bind();
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
-        depthProgram_.set("uLightViewProj", vp);
-        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp});
+        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp, true});
     };
     if (stillKey == 0) {  // nothing reused: every caster, every frame
         drawInto(m.depthFaces[face], Motion::Any);
@@ -165,8 +164,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     const auto z = static_cast<GLint>(face);
     glCopyImageSubData(m.still.id(), target, 0, 0, 0, z, m.depth.id(), target, 0, 0, 0, z, m.resolution, m.resolution, 1);
     m.depthFaces[face].bind();
-    depthProgram_.set("uLightViewProj", vp);
-    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp});
+    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
     m.depthHolds[face] = 0;
 }
 
@@ -211,7 +209,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const auto face = static_cast<std::size_t>(f);
             const glm::mat4& vp = ls.viewProj[face];
             const int light = static_cast<int>(i);
-            const CasterSelection translucent{Casters::Translucent, vp, light};
+            const CasterSelection translucent{Casters::Translucent, vp, light, Motion::Any, vp};
             const TexelRect translucentTexels = texelRect(frame.casterBounds(translucent), vp, ls.resolution);
             const TexelRect tinted = withTint_ ? translucentTexels : TexelRect(0);
             // FarthestAround bounds reach one texel past the layers'.
@@ -281,7 +279,6 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
             glBlendEquationi(1, GL_MIN);
             glBlendFunci(1, GL_ONE, GL_ONE);
         }
-        tintProgram_.set("uLightViewProj", *translucent->cull);
         frame.drawCasters(tintProgram_, *translucent);
     }
     if (around) boundFarthestAround(m, face, redraw);

@@ -43,7 +43,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         const bool cropped = l < readTexels.size();
         const TexelRect read = cropped ? readTexels[l] : TexelRect(0, 0, res, res);
         const CasterSelection casters{Casters::Opaque, cropped && !isEmpty(read) ? cropTo(read, res) * viewProj[l] : viewProj[l],
-                                      frame.slots->sun, Motion::Any, viewProj[l]};
+                                      frame.slots->sun, Motion::Any, viewProj[l], true};
         const std::uint64_t key =
             reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset, read).value()
                   : 0;
@@ -52,7 +52,6 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         if (isEmpty(read)) continue;  // nothing reads this layer: its stale texels stay unread
         const ScopedScissor scissor(read, cropped);
         layerTargets_[l].beginDepthPass(res, res);
-        casters_.set("uLightViewProj", viewProj[l]);
         casters_.set("uClipPlane", clipPlane);
         frame.drawCasters(casters_, casters);
     }

@@ -210,7 +210,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             m.holds[f] = key;
             const TexelRect redo = kept ? depth_.maps(i).translucentRedo[f] : TexelRect(0);
             if (kept && isEmpty(redo)) continue;
-            const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i)};
+            const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i), Motion::Any, ls.viewProj[f]};
             const scene::Bounds casters = frame.casterBounds(translucent);
             glViewport(0, 0, m.resolution, m.resolution);
             m.targets[f].bind();
@@ -233,7 +233,6 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             }
             if (!casters.empty()) {
                 const ScopedScissor scissor(redo, kept);
-                casters_.set("uLightViewProj", ls.viewProj[f]);
                 const gl::ScopedPassState state(casterPass);
                 frame.drawCasters(casters_, translucent);
             }

@@ -155,8 +155,7 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& d
         m.multisampledTarget.bind();
         const float farDepth = 1.0f;
         glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
-        maps_.depthProgram().set("uLightViewProj", space.viewProj[face]);
-        frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i), Motion::Any, space.viewProj[face]});
+        frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i), Motion::Any, space.viewProj[face], true});
         fullscreenVao_.bind();
         m.multisampledDepth.bind(1);
     }
