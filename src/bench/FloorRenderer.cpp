@@ -51,7 +51,7 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
             if (d.castsShadow) {
                 // Solids' back faces culled in both passes, as the renderer culls them: the floor
                 // must not draw more than the renderer does. Both projections keep GL's winding.
-                render::cullBackFacesOfSolid(d);
+                render::cullBackFacesOfSolid(d, true, space.viewProj[0]);
                 gpu_.draw(d, depthProgram_);
                 triangles_ += d.triangles;
             }
@@ -70,14 +70,15 @@ void FloorRenderer::render(float time, const scene::Camera& camera, int width, i
         depth_.bind(gpu::kUnitShadow2D);
         compare_.bind(gpu::kUnitShadow2D);
         lambertProgram_.set("uShadowMap", gpu::kUnitShadow2D);
-        lambertProgram_.set("uViewProj", camera.projection(aspect) * camera.view());
+        const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+        lambertProgram_.set("uViewProj", viewProj);
         lambertProgram_.set("uShadowMatrix", shadows::kClipToTexture * space.viewProj[0]);
         const glm::vec3 toLight = light.type == scene::Light::Type::Directional ? -light.direction : glm::normalize(light.position);
         lambertProgram_.set("uToLight", glm::normalize(toLight));
         lambertProgram_.set("uBias", 0.002f);
         for (const render::Draw& d : draws)
             if (d.visible && !d.translucent) {
-                render::cullBackFacesOfSolid(d);
+                render::cullBackFacesOfSolid(d, true, viewProj);
                 gpu_.draw(d, lambertProgram_);
             }
         gl::Sampler::unbind(gpu::kUnitShadow2D);

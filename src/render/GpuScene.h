@@ -70,12 +70,18 @@ private:
     mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 
+// Whether the near plane of a pass drawn through `viewProj` (world to clip) may cut `bounds`:
+// some corner lies in front of it (z + w >= 0 in clip space) and some behind it or behind the eye.
+bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds);
+
 // A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
-// camera's opaque passes cull them: llvmpipe then neither rasterises them nor, where the index
-// order puts them first, shades them before the front faces cover them. (An eye inside a solid
-// sees through it.) Enables GL_CULL_FACE for `d` when it is a solid and `cull` is set, disables
-// it otherwise (`cull` false: both faces, RenderOptions::cullSolidBackFaces).
-void cullBackFacesOfSolid(const Draw& d, bool cull = true);
+// camera's opaque passes and the depth maps cull them: llvmpipe then neither rasterises them nor,
+// where the index order puts them first, shades them before the front faces cover them. An eye
+// inside a solid, or a near plane that cuts it open, sees its inside: such a solid (by its world
+// bounds, nearPlaneMayCut through `viewProj`) keeps both faces, as every other draw does.
+// Enables GL_CULL_FACE for `d` when it is to be culled and `cull` is set, disables it otherwise
+// (`cull` false: both faces, RenderOptions::cullSolidBackFaces).
+void cullBackFacesOfSolid(const Draw& d, bool cull, const glm::mat4& viewProj);
 
 // Uploads an RGBA8 image with mipmaps (sRGB when it holds colour), trilinear, with at most
 // `anisotropy` anisotropic samples.

@@ -166,6 +166,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     if (width <= 0 || height <= 0) return;  // minimised: nothing to draw into
     ensureTargets(width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const glm::mat4 cameraViewProj = camera.projection(aspect) * camera.view();
     const std::vector<Draw> draws = gpu_.draws(time, camera.position);
 
     // Light spaces for this frame: objects move, so the directional fit follows them.
@@ -230,9 +231,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthOnly && selection.lightViewProj
                                     ? facesTurnedAway(*selection.lightViewProj) : GL_NONE;
             glCullFace(away == GL_NONE ? GL_BACK : away);
+            const glm::mat4 through = selection.lightViewProj.value_or(glm::mat4(1.0f));
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
-                cullBackFacesOfSolid(d, away != GL_NONE);
+                cullBackFacesOfSolid(d, away != GL_NONE, through);
                 const std::size_t drawn = selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
                                                          : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
@@ -244,7 +246,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
             for (const Draw& d : draws)
                 if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
-                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces);  // seen from the camera, as drawSurfaces is
+                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces, cameraViewProj);  // seen from the camera, as drawSurfaces is
                     gpu_.draw(d, programs.of(*d.material));
                 }
             glDisable(GL_CULL_FACE);
@@ -392,10 +394,11 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     }
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
+    const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
     for (const Draw& d : draws) {
         if (!drawn(d)) continue;
         const gl::Program& program = lighting_.of(*d.material, d.translucent);
-        if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces);  // translucent solids show their far side through the near one
+        if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);  // translucent solids show their far side through the near one
         if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
         else gpu_.draw(d, program);
     }
@@ -414,14 +417,15 @@ void Renderer::setReceivers(std::vector<bool> own, bool ownPixelsOnly) {
 void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect) {
     if (ownObjects_.empty() && !options_.depthPrepass) return;
     if (!depthFirst_) depthFirst_.emplace();
-    depthFirst_->set("uLightViewProj", camera.projection(aspect) * camera.view());
+    const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
+    depthFirst_->set("uLightViewProj", viewProj);
     const shadows::DrawPrograms programs = *depthFirst_;
     gl::PassState state = gl::PassState::depthOnly();
     state.colorWrite = glm::bvec4(false);
     const gl::ScopedPassState scope(state);
     for (const Draw& d : draws)
         if (d.visible && !d.translucent && (options_.depthPrepass || !ownObject(d.object))) {
-            cullBackFacesOfSolid(d, options_.cullSolidBackFaces);
+            cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);
             gpu_.draw(d, programs.of(*d.material));
         }
 }

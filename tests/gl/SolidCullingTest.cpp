@@ -132,3 +132,33 @@ INSTANTIATE_TEST_SUITE_P(DefaultPolygonOffset, SolidCullingUnderGrazingLight, ::
 
 }  // namespace
 }  // namespace penumbra::test
+
+namespace penumbra::test {
+namespace {
+
+// An eye inside a solid, or a near plane that cuts one open, sees its inside: those solids keep
+// both faces (render::nearPlaneMayCut). A room made of one closed box, with the camera and a
+// point light inside it and a crate on its floor, must look as it does drawing both faces; culled
+// like any solid, its walls vanished for the camera (the background showed) and for the light's
+// cube map (the crate's shadow and the walls' own shadowing were lost).
+TEST(SolidCullingFromInside, ARoomMadeOfOneClosedBoxLooksAsDrawingBothFaces) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 2, 3.5], "target": [0, 1, -2], "fov_deg": 70 },
+      "lights": [ { "type": "point", "position": [1.5, 3, 0], "range": 30, "intensity": 2 },
+                  { "type": "directional", "direction": [-0.3, -1, -0.2], "intensity": 0.5 } ],
+      "objects": [ { "shape": "box", "size": [10, 4, 10], "position": [0, 2, 0] },
+                   { "shape": "box", "size": [1, 1, 1], "position": [0, 0.6, -1.5] } ] })");
+    for (const char* technique : {"hard", "shadow-volumes"}) {
+        render::RenderOptions culling = optionsFor(technique);
+        render::RenderOptions both = culling;
+        both.cullSolidBackFaces = false;
+        const Frame a = renderFrame(s, culling, 96, 96), b = renderFrame(s, both, 96, 96);
+        ASSERT_EQ(a.rgba.size(), b.rgba.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < a.rgba.size(); ++i) differing += std::abs(a.rgba[i] - b.rgba[i]) > 1e-4f;
+        EXPECT_EQ(differing, 0u) << technique;
+    }
+}
+
+}  // namespace
+}  // namespace penumbra::test
