@@ -25,6 +25,8 @@ hd=(--size 1920x1080 --shadow-res 2048)
 step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmup-seconds 5 --no-images --out "$work/warm"
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
 step "default scene, maps redrawn" 150 penumbra bench --techniques all "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/redrawn"
+# What CSSM's farthest-layer bound (tint_behind_all, on by default) costs where maps are redrawn.
+step "default scene, maps redrawn, cssm without tint_behind_all" 40 penumbra bench --techniques cssm1,cssm2 "${hd[@]}" --redraw-shadow-maps --param tint_behind_all=false "${short[@]}" --out "$work/redrawn-no-tba"
 if [ -f bench/assets/dragon_vrip.ply ]; then
     dragon=none,hard,cssm2,cssm1,pcf-poisson16,pcss,cascaded,lispsm,psm,vsm,msm,floor-depth,floor-lambert,floor-unshadowed
     step "dragon" 120 penumbra bench bench/dragon.json --techniques $dragon "${hd[@]}" "${short[@]}" --out "$work/dragon"
