@@ -152,15 +152,6 @@ void GpuScene::addSurfaceBounds(const Draw& d, std::vector<scene::Bounds>& out) 
     for (const MeshCluster& c : clusters[d.part]) out.push_back(c.bounds.transformed(d.model));
 }
 
-bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds) {
-    bool front = false, behind = false;
-    for (const glm::vec3& c : bounds.corners()) {
-        const glm::vec4 clip = viewProj * glm::vec4(c, 1.0f);
-        (clip.z + clip.w >= 0.0f ? front : behind) = true;
-    }
-    return front && behind;
-}
-
 void cullBackFacesOfSolid(const Draw& d, bool cull, const glm::mat4& viewProj) {
     if (d.solid && cull && !nearPlaneMayCut(viewProj, d.worldBounds)) glEnable(GL_CULL_FACE);
     else glDisable(GL_CULL_FACE);

@@ -70,10 +70,6 @@ private:
     mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 
-// Whether the near plane of a pass drawn through `viewProj` (world to clip) may cut `bounds`:
-// some corner lies in front of it (z + w >= 0 in clip space) and some behind it or behind the eye.
-bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds);
-
 // A solid's back faces (Draw::solid) lie behind its front faces from any eye outside it, so the
 // camera's opaque passes and the depth maps cull them: llvmpipe then neither rasterises them nor,
 // where the index order puts them first, shades them before the front faces cover them. An eye

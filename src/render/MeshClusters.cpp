@@ -1,6 +1,7 @@
 #include "render/MeshClusters.h"
 
 #include <algorithm>
+#include <array>
 #include <meshoptimizer.h>
 #include <numeric>
 
@@ -76,6 +77,12 @@ std::vector<MeshCluster> clusterPart(const scene::Mesh& mesh, const scene::MeshP
     return clusters;
 }
 
+std::array<glm::vec4, 8> clipCorners(const scene::Bounds& box, const glm::mat4& clipFromBox) {
+    std::array<glm::vec4, 8> corners{};
+    for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = clipFromBox * glm::vec4(box.corner(i), 1.0f);
+    return corners;
+}
+
 }  // namespace
 
 ClusteredIndices clusterMesh(const scene::Mesh& mesh) {
@@ -88,9 +95,7 @@ ClusteredIndices clusterMesh(const scene::Mesh& mesh) {
 
 bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox) {
     if (box.empty()) return true;
-    glm::vec4 corners[8];
-    for (int i = 0; i < 8; ++i)
-        corners[i] = clipFromBox * glm::vec4(box.corner(i), 1.0f);
+    const std::array<glm::vec4, 8> corners = clipCorners(box, clipFromBox);
     for (int axis = 0; axis < 3; ++axis)
         for (float side : {-1.0f, 1.0f}) {
             bool allOutside = true;
@@ -98,6 +103,12 @@ bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox) {
             if (allOutside) return true;
         }
     return false;
+}
+
+bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds) {
+    bool front = false, behind = false;
+    for (const glm::vec4& clip : clipCorners(bounds, viewProj)) (clip.z + clip.w >= 0.0f ? front : behind) = true;
+    return front && behind;
 }
 
 std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh) {

@@ -41,6 +41,10 @@ ClusteredIndices clusterMesh(const scene::Mesh& mesh);
 // True when the box, taken through `clipFromBox`, lies wholly outside one plane of the clip volume.
 bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox);
 
+// Whether the near plane of a pass drawn through `viewProj` (world to clip) may cut `bounds`:
+// some corner lies in front of it (z + w >= 0 in clip space) and some behind it or behind the eye.
+bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds);
+
 // The index ranges of the clusters inside the clip volume, neighbours merged into one range.
 struct IndexRange {
     std::uint32_t firstIndex;
