@@ -15,7 +15,7 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
+#include <utility>
 
 namespace penumbra::test {
 namespace {
@@ -39,13 +39,26 @@ scene::Scene solids() {
                      "material": { "texture": "left_half_cut.png", "alpha_cutoff": 0.5 } } ] })");
 }
 
+// `technique`'s options as they are (culling), and with both faces drawn.
+std::pair<render::RenderOptions, render::RenderOptions> cullingAndBothFaces(const char* technique) {
+    render::RenderOptions culling = optionsFor(technique);
+    render::RenderOptions both = culling;
+    both.cullSolidBackFaces = false;
+    return {culling, both};
+}
+
+// Channel values of two pictures that differ by more than 1e-4.
+std::size_t differingValues(const std::vector<float>& a, const std::vector<float>& b) {
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) differing += std::abs(a[i] - b[i]) > 1e-4f;
+    return differing;
+}
+
 class SolidCulling : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SolidCulling, LeavesEveryMapAndPixelAsDrawingBothFaces) {
     scene::Scene s = solids();
-    render::RenderOptions culling = optionsFor(GetParam());
-    render::RenderOptions both = culling;
-    both.cullSolidBackFaces = false;
+    const auto [culling, both] = cullingAndBothFaces(GetParam());
     render::Renderer a(s, culling), b(s, both);
     render::OffscreenTarget target(96, 96);
     a.render(0.0f, s.camera, 96, 96, target.framebuffer());
@@ -67,9 +80,7 @@ TEST_P(SolidCulling, LeavesEveryMapAndPixelAsDrawingBothFaces) {
     // wrong winding would hardly change. Moment maps' filtered lookups round differently in the
     // last bits at a few dozen pixels (at most 2.2e-5 measured).
     ASSERT_EQ(pictureA.size(), pictureB.size());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < pictureA.size(); ++i) differing += std::abs(pictureA[i] - pictureB[i]) > 1e-4f;
-    EXPECT_EQ(differing, 0u) << "channel values of the picture";
+    EXPECT_EQ(differingValues(pictureA, pictureB), 0u) << "channel values of the picture";
 }
 
 // The last three draw the camera's view too (ShadowFrame::drawSurfaces): the shadow volumes'
@@ -81,12 +92,6 @@ INSTANTIATE_TEST_SUITE_P(EveryDepthMap, SolidCulling,
                              for (char& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
                              return name;
                          });
-
-}  // namespace
-}  // namespace penumbra::test
-
-namespace penumbra::test {
-namespace {
 
 // With the lights' default polygon offset, a front face seen nearly edge-on from the light gets
 // a large slope offset, and culling leaves no back face behind it in the map: along a grazing
@@ -108,9 +113,7 @@ TEST_P(SolidCullingUnderGrazingLight, LeavesThePictureAsDrawingBothFacesButForAF
                    { "shape": "sphere", "radius": 0.7, "position": [0, 0.7, -1.5] },
                    { "shape": "box", "size": [1, 0.4, 1.6], "position": [1.5, 1.2, 0], "rotation_deg": [30, 20, 10] },
                    { "shape": "box", "size": [0.8, 0.8, 0.8], "position": [0.5, 0.4, 1.5], "rotation_deg": [0, 35, 0] } ] })");
-    render::RenderOptions culling = optionsFor(GetParam());
-    render::RenderOptions both = culling;
-    both.cullSolidBackFaces = false;
+    const auto [culling, both] = cullingAndBothFaces(GetParam());
     const Frame a = renderFrame(s, culling, 160, 90), b = renderFrame(s, both, 160, 90);
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     std::size_t differing = 0, shadowed = 0;
@@ -130,12 +133,6 @@ TEST_P(SolidCullingUnderGrazingLight, LeavesThePictureAsDrawingBothFacesButForAF
 INSTANTIATE_TEST_SUITE_P(DefaultPolygonOffset, SolidCullingUnderGrazingLight, ::testing::Values("hard", "pcf-bilinear", "cascaded"),
                          [](const auto& info) { return testNameOf(info.param); });
 
-}  // namespace
-}  // namespace penumbra::test
-
-namespace penumbra::test {
-namespace {
-
 // An eye inside a solid, or a near plane that cuts one open, sees its inside: those solids keep
 // both faces (render::nearPlaneMayCut). A room made of one closed box, with the camera and a
 // point light inside it and a crate on its floor, must look as it does drawing both faces; culled
@@ -149,14 +146,10 @@ TEST(SolidCullingFromInside, ARoomMadeOfOneClosedBoxLooksAsDrawingBothFaces) {
       "objects": [ { "shape": "box", "size": [10, 4, 10], "position": [0, 2, 0] },
                    { "shape": "box", "size": [1, 1, 1], "position": [0, 0.6, -1.5] } ] })");
     for (const char* technique : {"hard", "shadow-volumes"}) {
-        render::RenderOptions culling = optionsFor(technique);
-        render::RenderOptions both = culling;
-        both.cullSolidBackFaces = false;
+        const auto [culling, both] = cullingAndBothFaces(technique);
         const Frame a = renderFrame(s, culling, 96, 96), b = renderFrame(s, both, 96, 96);
         ASSERT_EQ(a.rgba.size(), b.rgba.size());
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < a.rgba.size(); ++i) differing += std::abs(a.rgba[i] - b.rgba[i]) > 1e-4f;
-        EXPECT_EQ(differing, 0u) << technique;
+        EXPECT_EQ(differingValues(a.rgba, b.rgba), 0u) << technique;
     }
 }
 
