@@ -91,6 +91,15 @@ public:
         FarthestAround,
     };
 
+    // Passes that draw translucent casters over a light's opaque depth, tested and not written (the
+    // tint here, CSSM's colour map), push each fragment's tested depth back by this (factor, units)
+    // offset (glsl/over_opaque.glsl): the light's polygon offset, which the opaque casters were
+    // drawn with, and a few units more. A translucent face lying on an opaque surface (a glass
+    // block's bottom on the floor) then fails the test and tints nothing there, as an opaque
+    // surface does not shadow itself, and as the ray-traced reference, whose shadow rays start past
+    // the receiver, sees it. The depth they store stays the fragment's own.
+    static glm::vec2 translucentTestOffset(const scene::Light& light);
+
     // `withTint` false: opaque depth only (techniques that handle translucency themselves).
     explicit DepthAndTintMaps(bool withTint = true, TintAlpha tintAlpha = TintAlpha::NearestLayer);
     // Turns the tint maps on or off; the maps are made again on the next render.
@@ -136,7 +145,7 @@ private:
     // Clears the tint in `redraw` and draws the `translucent` casters (none: nullptr) there again,
     // with their bound (FarthestAround).
     void redrawTint(const ShadowFrame& frame, LightMaps& maps, std::size_t face, const CasterSelection* translucent,
-                    const TexelRect& redraw);
+                    const TexelRect& redraw, const scene::Light& light);
     // TintAlpha::FarthestAround, after the tint pass redrew `drawn` (and with it the drawn alpha):
     // the tint's alpha becomes the drawn alpha's least over each texel's 3 x 3 neighbourhood
     // wherever that reaches `drawn` (grown by one).

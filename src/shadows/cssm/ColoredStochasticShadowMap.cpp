@@ -202,6 +202,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             p->set("uNear", ls.near);
             p->set("uFar", ls.far);
         }
+        casters_.set("uTestOffset", DepthAndTintMaps::translucentTestOffset((*frame.lights)[i]));
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
             // Drawn with the same key last frame: the colour map and its tiles are as drawn except
             // where animated casters were or are (DepthAndTintMaps::translucentRedo).

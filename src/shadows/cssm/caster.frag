@@ -11,6 +11,7 @@
 #include "shaders/common/material.glsl"
 #include "shaders/common/random.glsl"
 #include "shaders/common/depth.glsl"
+#include "src/shadows/common/glsl/over_opaque.glsl"
 #include "src/shadows/cssm/CssmFilter.h"
 in vec2 vUv;
 uniform int uPerspective;
@@ -66,6 +67,7 @@ float stratifiedXi(uint stream) {
 float drawXi(uint stream) { return kXi == kXiStratified ? stratifiedXi(stream) : fragmentRandom(stream); }
 
 void main() {
+    testBehindOpaqueOffset();
     vec3 rho = materialStopped(materialCoverage(materialTexel(vUv)));
     float z = linearDepth(gl_FragCoord.z);
     // CSSM2: one ξ shared by the channels. CSSM1: an independent ξ per channel (its own stream),

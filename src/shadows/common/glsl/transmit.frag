@@ -5,6 +5,7 @@
 // in front of it stay untinted (DepthAndTintMaps::TintAlpha::NearestLayer), or MIN 1 - the
 // farthest layer's (FarthestAround).
 #include "shaders/common/material.glsl"
+#include "src/shadows/common/glsl/over_opaque.glsl"
 in vec2 vUv;
 // The second output (RG32F, MIN), where the map has one, keeps per texel in full precision
 // 1 - the farthest layer's depth (r) and 1 - the farthest entry's (g): a face of a closed part
@@ -13,6 +14,7 @@ in vec2 vUv;
 layout(location = 0) out vec4 outTransmit;
 layout(location = 1) out vec2 outDrawn;
 void main() {
+    testBehindOpaqueOffset();
     float coverage = materialCoverage(materialTexel(vUv));
     float drawn = 1.0 - gl_FragCoord.z;
     outTransmit = vec4(vec3(1.0) - materialStopped(coverage), drawn);
