@@ -5,6 +5,8 @@
 #include "gpu/ShaderContract.h"
 #include "util/Digest.h"
 
+#include <utility>
+
 namespace penumbra::shadows {
 
 using scene::Light;
@@ -85,6 +87,8 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.translucentMoving.assign(faces, TexelRect(0));
     m.stillKeys.assign(faces, 0);
     m.movingTexels.assign(faces, TexelRect(0));
+    m.depthOverStill.assign(faces, 0);
+    m.depthMovedIn.assign(faces, TexelRect(0));
     // FarthestAround's bound is made from the drawn alpha; NearestLayer maps get theirs in scenes
     // with translucent casters (render).
     if (withTint_ && tintAlpha_ == TintAlpha::FarthestAround) ensureDrawn(m);
@@ -148,6 +152,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
         frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp, true});
     };
+    const std::uint64_t overStill = std::exchange(m.depthOverStill[face], 0);
     if (stillKey == 0) {  // nothing reused: every caster, every frame
         drawInto(m.depthFaces[face], Motion::Any);
         m.depthHolds[face] = 0;
@@ -158,14 +163,28 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
         m.depthHolds[face] = stillKey;
         return;
     }
-    if (m.stillHolds[face] != stillKey) drawInto(m.stillFaces[face], Motion::Still);
+    const bool stillKept = m.stillHolds[face] == stillKey;
+    if (!stillKept) drawInto(m.stillFaces[face], Motion::Still);
     m.stillHolds[face] = stillKey;
+    // The still depth back where last frame's animated casters were and where this frame's are;
+    // elsewhere `depth` holds it already. The animated casters are drawn inside their own texels
+    // only, which keeps that true for the next frame.
+    const TexelRect moved = m.movingTexels[face];
+    const bool onlyMoved = stillKept && overStill == stillKey && !region.cropped;
+    const TexelRect restore = onlyMoved ? unite(m.depthMovedIn[face], moved) : TexelRect(0, 0, m.resolution, m.resolution);
     const GLenum target = m.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
     const auto z = static_cast<GLint>(face);
-    glCopyImageSubData(m.still.id(), target, 0, 0, 0, z, m.depth.id(), target, 0, 0, 0, z, m.resolution, m.resolution, 1);
+    if (!isEmpty(restore))
+        glCopyImageSubData(m.still.id(), target, 0, restore.x, restore.y, z, m.depth.id(), target, 0, restore.x, restore.y, z,
+                           restore.z - restore.x, restore.w - restore.y, 1);
     m.depthFaces[face].bind();
-    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
+    {
+        const ScopedScissor movedOnly(region.cropped ? intersection(moved, region.texels) : moved);
+        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
+    }
     m.depthHolds[face] = 0;
+    m.depthOverStill[face] = stillKey;
+    m.depthMovedIn[face] = moved;
 }
 
 void DepthAndTintMaps::setFiltering(GLenum filter) {

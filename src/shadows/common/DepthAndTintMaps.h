@@ -58,6 +58,12 @@ public:
         std::vector<std::uint64_t> stillKeys;
         std::vector<TexelRect> movingTexels;
         gl::Texture still;  // the still casters' depth, copied into `depth` before the animated ones are drawn
+        // Per face, after a frame that drew animated casters over a copy of `still`: the digest of
+        // that copy (0: none) and the texels they were drawn in. Outside those `depth` equals
+        // `still`, so the next such frame copies back only them and this frame's (a whole 2048^2
+        // face cost llvmpipe about 4 ms a frame).
+        std::vector<std::uint64_t> depthOverStill;
+        std::vector<TexelRect> depthMovedIn;
         std::vector<gl::Framebuffer> stillFaces;
         // The drawn alpha (RG32F: 1 - the farthest layer's depth per texel, 1 - the farthest
         // entry's, transmit.frag), which the tint pass writes as its second target (tintFaces'
