@@ -123,12 +123,6 @@ TEST(Compare, CascadesBeatOnePlainMapOfTheSameMemoryOnALongScene) {
     EXPECT_LT(cascades.wrongShare, 0.5 * plain.wrongShare);
 }
 
-}  // namespace
-}  // namespace penumbra::test
-
-namespace penumbra::test {
-namespace {
-
 // A glass block resting on the ground under a sun and a spot: the ground under it, and around its
 // foot, gets the light through the faces above it. Its bottom face lies on the ground, and the
 // reference's shadow rays, which start past the receiver, never meet it; nor may the maps, whose

@@ -168,7 +168,8 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     m.stillHolds[face] = stillKey;
     // The still depth back where last frame's animated casters were and where this frame's are;
     // elsewhere `depth` holds it already. The animated casters are drawn inside their own texels
-    // only, which keeps that true for the next frame.
+    // only, which keeps that true for the next frame. A cropped region (drawn under the outer
+    // scissor) restores the whole face every frame instead.
     const TexelRect moved = m.movingTexels[face];
     const bool onlyMoved = stillKept && overStill == stillKey && !region.cropped;
     const TexelRect restore = onlyMoved ? unite(m.depthMovedIn[face], moved) : TexelRect(0, 0, m.resolution, m.resolution);
@@ -179,7 +180,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
                            restore.z - restore.x, restore.w - restore.y, 1);
     m.depthFaces[face].bind();
     {
-        const ScopedScissor movedOnly(region.cropped ? intersection(moved, region.texels) : moved);
+        const ScopedScissor movedOnly(moved, !region.cropped);
         frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
     }
     m.depthHolds[face] = 0;

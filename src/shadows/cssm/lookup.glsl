@@ -234,9 +234,9 @@ vec3 colouredByTint(ShadowSite s, int side) {
     // The half-float alpha (1 - depth) rounds by up to 2^-11 of itself, and a bilinear blend of
     // bounds is at most their least: a receiver within 2^-10 of (1 - its depth) behind the farthest
     // layer is counted instead (and within 2^-23, half floats' subnormal steps, right at the far
-    // plane). Relative, not absolute: a perspective light's 1 - depth is small
-    // far from it: 2^-10 of window depth is 0.85 m on scenes/glass.json's floor, 6.6 m from its
-    // spot (near 0.05, far 20), so the floor that close behind each pane counted texels for nothing.
+    // plane). Relative, not absolute: a perspective light's 1 - depth is small far from it, and
+    // 2^-10 of window depth is 0.85 m on scenes/glass.json's floor, 6.6 m from its spot (near
+    // 0.05, far 20), so the floor that close behind each pane counted texels for nothing.
     bool behindEveryLayer = tint.a > (1.0 - s.depth) * (1.0 + 1.0 / 1024.0) + 1.0 / 8388608.0;
     MapFace m = mapFace(s);
     vec2 t = m.texel - 0.5;
