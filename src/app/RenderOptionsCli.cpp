@@ -31,6 +31,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
         "--both-faces", [&options] { options.cullSolidBackFaces = false; },
         "draw both faces of closed opaque parts in the camera's opaque passes and the depth maps (default: cull back "
         "faces; the same pixels and maps but for a few silhouette texels, less raster work)");
+    command.add_flag_callback(
+        "--tint-everywhere", [&options] { options.tintOnlyWhereReached = false; },
+        "shade every opaque receiver with the whole coloured-shadow lookup (default: where no translucent caster's "
+        "shadow can reach, a program that reads no tint; the same pixels)");
     command.add_flag("--depth-prepass", options.depthPrepass,
                      "draw the opaque surfaces' depth first, then shade each visible pixel once (same pixels; pays with "
                      "overdraw and dear shading, e.g. on a GPU)");

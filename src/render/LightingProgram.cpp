@@ -33,14 +33,16 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
     of(first);
 }
 
-const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent) {
+const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, bool untinted) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0)];
+    untinted = untinted && !translucent;
+    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0) + (untinted ? 8 : 0)];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;
         if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
         if (translucent) defines.emplace_back("MATERIAL_TRANSLUCENT 1");
         if (!alphaTested) defines.emplace_back("MATERIAL_NO_ALPHA_TEST 1");
+        if (untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
         build = buildLightingProgram(lookup_, defines);
     }
     return build;

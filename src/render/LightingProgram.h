@@ -26,8 +26,9 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int su
 // layout, a transparency variant).
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
 
-// The lighting program in up to eight builds: with or without a diffuse texture, for opaque or
-// translucent surfaces, with or without an alpha test. MATERIAL_UNTEXTURED never samples the
+// The lighting program in up to sixteen builds: with or without a diffuse texture, for opaque or
+// translucent surfaces, with or without an alpha test, for receivers no translucent caster's
+// shadow reaches or for any (RECEIVER_UNTINTED, render/TintReach.h). MATERIAL_UNTEXTURED never samples the
 // texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment whatever the
 // uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
@@ -40,7 +41,9 @@ public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
-    const gl::Program& of(const scene::Material& material, bool translucent = false);
+    // `untinted`: no translucent caster's coloured shadow reaches the pixels it shades, so every
+    // tint lookup folds to white (opaque surfaces only).
+    const gl::Program& of(const scene::Material& material, bool translucent = false, bool untinted = false);
     template <class F>
     void forEachBuilt(F&& f) const {
         for (const gl::Program& p : builds_)
@@ -50,7 +53,7 @@ public:
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    gl::Program builds_[8];  // [untextured + 2 translucent + 4 alpha-tested]
+    gl::Program builds_[16];  // [untextured + 2 translucent + 4 alpha-tested + 8 untinted]
 };
 
 }  // namespace penumbra::render

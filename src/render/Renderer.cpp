@@ -265,6 +265,21 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         glEnable(GL_SCISSOR_TEST);
         glScissor(first, 0, last - first, height);
     }
+    TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, PixelRect{first, 0, last, height});
+    tintSplit.scissored = partial;
+    tintShading_ = {};
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        if (draws[i].translucent || !draws[i].visible || !ownObject(draws[i].object)) continue;
+        using Shading = TintedPixels::Shading;
+        const Shading shading = tintSplit.draws.empty() ? Shading::Whole : tintSplit.draws[i].shading;
+        if (shading == Shading::Whole) ++tintShading_.whole;
+        else if (shading == Shading::Untinted) ++tintShading_.untinted;
+        else {
+            ++tintShading_.split;
+            tintShading_.tintedRects += tintSplit.draws[i].pixels.inside.size();
+            tintShading_.untintedRects += tintSplit.draws[i].pixels.outside.size();
+        }
+    }
     hdrFbo_.bind();
     glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;
@@ -281,7 +296,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
         drawDepthFirst(draws, camera, aspect);
-        drawSurfaces(draws, false, camera, aspect);
+        drawSurfaces(draws, false, camera, aspect, &tintSplit);
         if (options_.debugOverlay) drawDebugLines(camera, aspect);
         timer_.end(Pass::Opaque);
     }
@@ -377,12 +392,69 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
             gpu_.image(light.image).bind(gpu::kUnitProjector + static_cast<unsigned>(projector++));
 }
 
-void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect) {
+// Parts of up to this many triangles are split on the screen (drawn once per rectangle): llvmpipe
+// transforms every vertex of a draw however little of it the scissor keeps.
+static constexpr std::size_t kSplitTriangles = 4096;
+// Beyond this many rectangles a receiver is split around the footprints' bounding rectangle alone.
+static constexpr std::size_t kMostSplitDraws = 32;
+
+Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
+                                          PixelRect area) const {
+    TintSplit split;
+    split.area = area;
+    const float reach = technique_->tintReachTexels();
+    // Without translucent casters every program reads no tint already (SCENE_TRANSLUCENT_CASTERS 0).
+    if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
+        return split;
+    const int width = area.x1, height = area.y1;
+    std::vector<const scene::Bounds*> casters;
+    for (const Draw& c : draws)
+        if (c.translucent && c.castsShadow) casters.push_back(&c.worldBounds);
+    split.draws.resize(draws.size());
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        const Draw& d = draws[i];
+        if (d.translucent || !d.visible) continue;
+        const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
+        std::vector<PixelRect> tinted;
+        PixelRect all{area.x1, area.y1, area.x0, area.y0};  // their bounding rectangle
+        for (int l = 0; l < block.count.x; ++l) {
+            const gpu::LightData& light = block.lights[l];
+            if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
+            // The normal offset moves the receiver's lookup that many texels besides.
+            const float pad = reach + light.shadow.z + 2.0f;
+            for (const scene::Bounds* caster : casters) {
+                const PixelRect r = screenRect(tintFootprint(light, *caster, d.worldBounds, pad), viewProj, width, height).intersected(own);
+                if (r.empty()) continue;
+                tinted.push_back(r);
+                all = {std::min(all.x0, r.x0), std::min(all.y0, r.y0), std::max(all.x1, r.x1), std::max(all.y1, r.y1)};
+            }
+        }
+        TintedPixels& t = split.draws[i];
+        using Shading = TintedPixels::Shading;
+        if (tinted.empty()) {
+            t.shading = Shading::Untinted;
+            continue;
+        }
+        if (d.triangles > kSplitTriangles) continue;  // whole
+        t.pixels = partition(own, tinted);
+        if (t.pixels.inside.size() + t.pixels.outside.size() > kMostSplitDraws) t.pixels = partition(own, {all});
+        t.shading = t.pixels.outside.empty() ? Shading::Whole : Shading::Split;
+    }
+    return split;
+}
+
+void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
+                            const TintSplit* split) {
+    using Shading = TintedPixels::Shading;
     const auto drawn = [&](const Draw& d) {
         return d.translucent == translucent && d.visible && (translucent || ownObject(d.object));
     };
-    for (const Draw& d : draws)
-        if (drawn(d)) lighting_.of(*d.material, d.translucent);  // builds what this pass needs before it is prepared
+    const auto shading = [&](std::size_t i) { return translucent || !split || split->draws.empty() ? Shading::Whole : split->draws[i].shading; };
+    for (std::size_t i = 0; i < draws.size(); ++i)  // builds what this pass needs before it is prepared
+        if (drawn(draws[i])) {
+            if (shading(i) != Shading::Untinted) lighting_.of(*draws[i].material, draws[i].translucent);
+            if (shading(i) != Shading::Whole) lighting_.of(*draws[i].material, false, true);
+        }
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
@@ -395,12 +467,32 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
-    for (const Draw& d : draws) {
+    const auto scissor = [](const PixelRect& r) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    };
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        const Draw& d = draws[i];
         if (!drawn(d)) continue;
-        const gl::Program& program = lighting_.of(*d.material, d.translucent);
+        const gl::Program& program = lighting_.of(*d.material, d.translucent, shading(i) == Shading::Untinted);
         if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);  // translucent solids show their far side through the near one
-        if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
-        else gpu_.draw(d, program);
+        if (byTriangle) {
+            gpu_.drawTrianglesSorted(d, program, camera.position);
+        } else if (shading(i) != Shading::Split) {
+            gpu_.draw(d, program);
+        } else {  // each pixel in one rectangle: the footprint's with the whole lookup, the rest without tint
+            const RectPartition& pixels = split->draws[i].pixels;
+            for (const PixelRect& r : pixels.inside) {
+                scissor(r);
+                gpu_.draw(d, program);
+            }
+            for (const PixelRect& r : pixels.outside) {
+                scissor(r);
+                gpu_.draw(d, lighting_.of(*d.material, false, true));
+            }
+            if (split->scissored) scissor(split->area);
+            else glDisable(GL_SCISSOR_TEST);
+        }
     }
 }
 

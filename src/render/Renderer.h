@@ -12,6 +12,7 @@
 #include "render/GpuScene.h"
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
+#include "render/TintReach.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
 #include "shadows/ShadowTechnique.h"
@@ -76,6 +77,11 @@ struct RenderOptions {
     // Seed 002's "-sh 6": a technique per region was asked for, so a scene without regions is an
     // error rather than one technique everywhere (render/RegionView.h, drawsByRegion).
     bool requireRegions = false;
+    // Shade opaque receivers, or the screen rectangles of their pixels, that no translucent
+    // caster's coloured shadow can reach with a lighting program that reads no tint
+    // (render/TintReach.h): the same pixels, less shading where colour cannot fall. false gives
+    // every receiver the whole lookup (`--tint-everywhere`), for measuring what it saves.
+    bool tintOnlyWhereReached = true;
 };
 
 // The technique `options` asks for on `scene`: its own, else the scene's, else "hard".
@@ -126,6 +132,13 @@ public:
     std::uint64_t framesRendered() const { return frameIndex_; }
     // Triangles drawn into shadow maps in the last frame, per light (all passes and faces).
     const std::vector<std::size_t>& shadowTriangles() const { return shadowTriangles_; }
+    // How the last frame shaded its opaque draws where translucent casters may tint them
+    // (RenderOptions::tintOnlyWhereReached, render/TintReach.h): draws with the whole lookup, draws
+    // with the untinted program, draws split on the screen between the two (rectangles of each).
+    struct TintShading {
+        std::size_t whole = 0, untinted = 0, split = 0, tintedRects = 0, untintedRects = 0;
+    };
+    const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
     // The last frame's linear HDR colour (before fog and sRGB), RGBA floats, bottom row first.
     std::vector<float> readLinear() const;
@@ -133,7 +146,19 @@ public:
 
 private:
     void ensureTargets(int width, int height);
-    void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect);
+    // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
+    struct TintedPixels {
+        enum class Shading { Whole, Untinted, Split } shading = Shading::Whole;
+        RectPartition pixels;  // Split: the draw's pixels, inside some footprint's rectangle or outside all
+    };
+    struct TintSplit {
+        std::vector<TintedPixels> draws;  // per draw; empty: every draw whole
+        PixelRect area;                   // the camera passes' pixels
+        bool scissored = false;           // a column range scissors them (render's `columns`)
+    };
+    TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, PixelRect area) const;
+    void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
+                      const TintSplit* split = nullptr);
     void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
     bool ownObject(std::size_t object) const { return ownObjects_.empty() || (object < ownObjects_.size() && ownObjects_[object]); }
     void useLightLayout(std::vector<std::string> layout);
@@ -150,6 +175,7 @@ private:
     std::unique_ptr<shadows::ShadowTechnique> technique_;
     LightingPrograms lighting_;
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
+    TintShading tintShading_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster programs,

@@ -174,6 +174,13 @@ public:
     // uniform-selected filter for every pixel, masked (measured for CSSM: 52 ms of a 90 ms
     // opaque pass). The renderer rebuilds the program when they change.
     virtual std::vector<std::string> lookupDefines() const { return {}; }
+    // How far from a receiver's own texel, in texels of its light's map (LightSpace::texelScale),
+    // the lookup may read what translucent casters wrote (tint maps, coloured layers), normal
+    // offset not counted; negative where that is not bounded by the light's map (maps of their
+    // own, cascades or warps, whose texels may be coarser). The renderer shades receivers no
+    // translucent caster's shadow reaches with a program that reads none (render/TintReach.h).
+    // Default: the bilinear tint at the receiver (tintAt in shadow_filtering.glsl).
+    virtual float tintReachTexels() const { return 2.0f; }
     // Binds textures and sets uniforms the lookup needs on the lighting program.
     virtual void bindLookup(const gl::Program& lighting) const = 0;
     virtual std::size_t memoryBytes() const = 0;

@@ -6,6 +6,7 @@
 #include "scene/io/SceneFile.h"
 
 #include <algorithm>
+#include <cctype>
 #include <dlfcn.h>
 #include <execinfo.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -81,7 +82,8 @@ Frame renderChannel(scene::Scene& scene, render::OutputMode mode, int light, int
 }
 
 std::string testNameOf(std::string technique) {
-    std::replace(technique.begin(), technique.end(), '-', '_');
+    for (char& c : technique)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     return technique;
 }
 

@@ -24,7 +24,8 @@ struct Frame {
 
 scene::Scene sceneFromJson(const std::string& json);
 
-// A technique's name as a gtest parameter name: '-' is not allowed there ("pcf-bilinear" -> "pcf_bilinear").
+// A technique's name as a gtest parameter name: only letters, digits and '_' are allowed there
+// ("pcf-bilinear" -> "pcf_bilinear", "cssm2:filter=poisson16" -> "cssm2_filter_poisson16").
 std::string testNameOf(std::string technique);
 
 // Options for a technique that may carry one parameter: "cssm2:xi=white".

@@ -248,6 +248,11 @@ std::vector<std::string> ColoredStochasticShadowMap::lookupDefines() const {
             std::string("CSSM_TINT_BEHIND_ALL ") + (tintBehindAll() ? "1" : "0")};
 }
 
+// The widest the lookup reads around the receiver's texel: the 2 x 2 tiles around it (box filters,
+// up to two tiles of 8 texels away), the 13-tap cross (7 texels and its jitter), a disk's radius
+// (lookup.glsl), plus the bilinear tint's texel.
+float ColoredStochasticShadowMap::tintReachTexels() const { return std::max({16.0f, radiusTexels_, 8.0f}) + 2.0f; }
+
 void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     depth_.bind();
     for (std::size_t i = 0; i < depth_.slots().size() && i < maps_.size(); ++i) {

@@ -40,6 +40,7 @@ public:
     std::filesystem::path lookupShader() const override { return "src/shadows/cssm/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
     std::vector<std::string> lookupDefines() const override;
+    float tintReachTexels() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;

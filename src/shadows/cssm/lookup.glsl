@@ -403,6 +403,11 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
                           : s.coord.xy * s.resolution;
     vec2 dsdx = dFdx(sTexels), dsdy = dFdy(sTexels);
     if (!s.inside) return vec3(1.0);
+#ifdef RECEIVER_UNTINTED
+    // No translucent layer reaches this receiver's texels (render/TintReach.h): with the opaque
+    // casters in the depth map, the coloured term is exactly 1 and only the hard test is left.
+    if (kSeparateOpaque) return vec3(compareAt(s, vec2(0.0), 0.0));
+#endif
     vec3 sum = vec3(0.0);
     int n;
     if (kFilter == kCssmBox16 || kFilter == kCssmBox64) {

@@ -20,6 +20,8 @@ public:
     // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
     // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
     // search and its dynamically indexed matrix.
+    // The sun's cascades (warps) are maps of their own, their texels not bounded by the light's.
+    float tintReachTexels() const override { return -1.0f; }
     std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + warped_.memoryBytes(); }

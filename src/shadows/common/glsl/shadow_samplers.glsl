@@ -56,9 +56,11 @@ vec4 shadowTintCube(int slot, vec3 dir) {
 // The translucent tint at a receiver of window depth `depth` (Nápravník 2020's colour map: the
 // colour applies only behind the nearest translucent layer; alpha holds 1 - its depth). A program
 // for a scene where no translucent object casts a shadow (SCENE_TRANSLUCENT_CASTERS 0) fetches
-// nothing: measured on llvmpipe, the fetch was 2.7 ms of hard's 24 ms opaque pass.
+// nothing: measured on llvmpipe, the fetch was 2.7 ms of hard's 24 ms opaque pass. Nor does a
+// program for receivers no translucent caster's shadow reaches (RECEIVER_UNTINTED: the renderer
+// draws them, or their pixels off every coloured shadow's footprint, with it; render/TintReach.h).
 vec3 tintBehind(vec4 tint, float depth) { return 1.0 - depth < tint.a ? tint.rgb : vec3(1.0); }  // alpha: 1 - the nearest layer's depth
-#if defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0
+#if (defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0) || defined(RECEIVER_UNTINTED)
 vec3 shadowTintBehind2D(int slot, vec2 uv, float depth) { return vec3(1.0); }
 vec3 shadowTintBehindCube(int slot, vec3 dir, float depth) { return vec3(1.0); }
 #else

@@ -1,0 +1,178 @@
+#include "render/TintReach.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::render {
+
+namespace {
+
+// A half-space: points with dot(n, x) + d >= 0.
+struct Plane {
+    glm::vec3 n;
+    float d;
+    float at(const glm::vec3& x) const { return glm::dot(n, x) + d; }
+};
+
+// Sutherland-Hodgman: the part of convex polygon `poly` inside `plane`.
+std::vector<glm::vec3> clip(const std::vector<glm::vec3>& poly, const Plane& plane) {
+    std::vector<glm::vec3> out;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const glm::vec3& a = poly[i];
+        const glm::vec3& b = poly[(i + 1) % poly.size()];
+        const float fa = plane.at(a), fb = plane.at(b);
+        if (fa >= 0.0f) out.push_back(a);
+        if ((fa >= 0.0f) != (fb >= 0.0f)) out.push_back(a + (b - a) * (fa / (fa - fb)));  // signs differ: fa != fb
+    }
+    return out;
+}
+
+// The box of `receiver` inside every plane: each face of the receiver's box clipped by them. Every
+// vertex of the (convex) intersection lies on a face of the box, or is `apex` (the light, where
+// the planes meet) inside the box.
+scene::Bounds insideAll(const scene::Bounds& receiver, const std::vector<Plane>& planes, const glm::vec3* apex) {
+    scene::Bounds out;
+    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    for (const auto& face : kFaces) {
+        std::vector<glm::vec3> poly;
+        for (int c : face) poly.push_back(receiver.corner(c));
+        for (const Plane& plane : planes) {
+            if (poly.empty()) break;
+            poly = clip(poly, plane);
+        }
+        for (const glm::vec3& v : poly) out.add(v);
+    }
+    if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
+        std::all_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.at(*apex) >= 0.0f; }))
+        out.add(*apex);
+    if (out.empty()) return out;
+    return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
+}
+
+glm::vec3 perpendicular(const glm::vec3& d) {
+    return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+}
+
+}  // namespace
+
+scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels) {
+    if (caster.empty() || receiver.empty()) return {};
+    const float texelScale = light.shadow.w;
+    std::vector<Plane> planes;
+    if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
+        // The caster's shadow: the prism along d over its box's extent across the light, padded
+        // by texels of texelScale (the same width everywhere in an orthographic map).
+        const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
+        const glm::vec3 u = perpendicular(d), v = glm::cross(d, u);
+        const float pad = padTexels * texelScale;
+        glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+        for (const glm::vec3& c : caster.corners()) {
+            const glm::vec2 q(glm::dot(u, c), glm::dot(v, c));
+            lo = glm::min(lo, q);
+            hi = glm::max(hi, q);
+        }
+        planes = {{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}};
+        return insideAll(receiver, planes, nullptr);
+    }
+    // Perspective lights (spot, projector, point): the pyramid from the light through the
+    // caster's box, in the projective coordinates (s, t) = (u, v)·(x - p) / a·(x - p) of an axis a
+    // through the box's centre, padded by texels of texelScale per unit distance (a texel spans at
+    // most that angle, dθ = ds cos²θ: hence the 1 + tan² on the pad).
+    const glm::vec3 p = glm::vec3(light.positionNear);
+    const glm::vec3 toCaster = caster.center() - p;
+    if (glm::length(toCaster) <= 1e-6f) return receiver;
+    const glm::vec3 a = glm::normalize(toCaster), u = perpendicular(a), v = glm::cross(a, u);
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& c : caster.corners()) {
+        const float w = glm::dot(a, c - p);
+        // A box reaching beside or behind the light (a point light inside a glass ball) has no
+        // bounded pyramid: all of the receiver may be tinted.
+        if (w <= 1e-3f * glm::length(c - p)) return receiver;
+        const glm::vec2 q(glm::dot(u, c - p) / w, glm::dot(v, c - p) / w);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+    }
+    const float tan2 = std::max(lo.x * lo.x, hi.x * hi.x) + std::max(lo.y * lo.y, hi.y * hi.y);
+    const float pad = padTexels * texelScale * (1.0f + tan2);
+    lo -= pad;
+    hi += pad;
+    // s >= lo.x: (u - lo.x a)·(x - p) >= 0, and so on; w > 0 in front of the light.
+    const auto through = [&](const glm::vec3& n) { return Plane{n, -glm::dot(n, p)}; };
+    planes = {through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a)};
+    return insideAll(receiver, planes, &p);
+}
+
+PixelRect PixelRect::intersected(const PixelRect& r) const {
+    PixelRect i{std::max(x0, r.x0), std::max(y0, r.y0), std::min(x1, r.x1), std::min(y1, r.y1)};
+    return i.empty() ? PixelRect{} : i;
+}
+
+PixelRect screenRect(const scene::Bounds& box, const glm::mat4& viewProj, int width, int height) {
+    const PixelRect view{0, 0, width, height};
+    if (box.empty()) return {};
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& c : box.corners()) {
+        const glm::vec4 clip = viewProj * glm::vec4(c, 1.0f);
+        if (clip.w <= 1e-5f) return view;  // behind the eye: its projection is unbounded
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    const auto pixel = [](float ndc, int size) { return (ndc * 0.5f + 0.5f) * static_cast<float>(size); };
+    // Far outside the view, clamp before converting (an int cannot hold every float).
+    const auto low = [&](float ndc, int size) { return static_cast<int>(std::floor(std::clamp(pixel(ndc, size), -1.0f, size + 1.0f))) - 1; };
+    const auto high = [&](float ndc, int size) { return static_cast<int>(std::ceil(std::clamp(pixel(ndc, size), -1.0f, size + 1.0f))) + 1; };
+    return PixelRect{low(lo.x, width), low(lo.y, height), high(hi.x, width), high(hi.y, height)}.intersected(view);
+}
+
+RectPartition partition(const PixelRect& area, const std::vector<PixelRect>& covered) {
+    RectPartition out;
+    if (area.empty()) return out;
+    std::vector<int> xs{area.x0, area.x1}, ys{area.y0, area.y1};
+    std::vector<PixelRect> cut;
+    for (const PixelRect& c : covered) {
+        const PixelRect r = c.intersected(area);
+        if (r.empty()) continue;
+        cut.push_back(r);
+        xs.insert(xs.end(), {r.x0, r.x1});
+        ys.insert(ys.end(), {r.y0, r.y1});
+    }
+    for (std::vector<int>* v : {&xs, &ys}) {
+        std::sort(v->begin(), v->end());
+        v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+    // Runs of equal cells along each row band; a run continues the one above it when the band
+    // below repeats it exactly (same columns, same side).
+    struct Run {
+        PixelRect rect;
+        bool inside;
+    };
+    std::vector<Run> done, open;
+    for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
+        std::vector<Run> band;
+        for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+            const PixelRect cell{xs[i], ys[j], xs[i + 1], ys[j + 1]};
+            const bool inside = std::any_of(cut.begin(), cut.end(), [&](const PixelRect& r) { return r.contains(cell); });
+            if (!band.empty() && band.back().inside == inside) band.back().rect.x1 = cell.x1;
+            else band.push_back({cell, inside});
+        }
+        std::vector<Run> next;
+        for (Run& r : band) {
+            const auto above = std::find_if(open.begin(), open.end(), [&](const Run& o) {
+                return o.inside == r.inside && o.rect.x0 == r.rect.x0 && o.rect.x1 == r.rect.x1;
+            });
+            if (above != open.end()) {
+                r.rect.y0 = above->rect.y0;
+                open.erase(above);
+            }
+            next.push_back(r);
+        }
+        done.insert(done.end(), open.begin(), open.end());
+        open = std::move(next);
+    }
+    done.insert(done.end(), open.begin(), open.end());
+    for (const Run& r : done) (r.inside ? out.inside : out.outside).push_back(r.rect);
+    return out;
+}
+
+}  // namespace penumbra::render

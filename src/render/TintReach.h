@@ -1,0 +1,54 @@
+#pragma once
+// Where the coloured shadow of a translucent caster can fall, so that the camera's opaque pass
+// shades everything else with a lighting program that reads no tint at all (RECEIVER_UNTINTED:
+// every tint fetch folds to white, and CSSM's coloured term with its fallback loop goes). llvmpipe
+// runs a shader's every fetch and loop body for every pixel whatever a pixel decides, so only a
+// program without the code spares its cost (issue 15: "no tint lookup where no translucent caster
+// can reach"; issue 11: CSSM at the cost of the plain map).
+//
+// Per light and translucent caster, the footprint is the part of the receiver's box inside the
+// caster's shadow volume: the prism (directional) or pyramid from the light (perspective) through
+// the caster's box, padded by the texels a lookup reads around its own. A receiver drawn with few
+// triangles is split on the screen: the footprints' rectangles with the full program, the rest
+// with the untinted one (scissored draws, each pixel in exactly one rectangle), so that a big
+// floor pays for coloured shadows only where they may fall.
+#include "gpu/ShaderContract.h"
+#include "scene/Mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <vector>
+
+namespace penumbra::render {
+
+// The part of `receiver` (a world box) that light `light` may tint through a translucent caster
+// inside `caster` (a world box): the box of the receiver's points whose ray from the light passes
+// within `padTexels` texels (of LightData::shadow.w; per unit distance for perspective lights) of
+// the caster's box. Each face of the receiver's box is clipped by the volume's planes, so the box
+// is exact up to the padding and conservative. Empty when the receiver lies off the caster's
+// shadow. (Receivers between the light and the caster count as reached: a lookup may extrapolate
+// the receiver's depth past its own.)
+scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels);
+
+// A pixel rectangle [x0, x1) x [y0, y1).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    bool contains(const PixelRect& r) const { return r.x0 >= x0 && r.y0 >= y0 && r.x1 <= x1 && r.y1 <= y1; }
+    PixelRect intersected(const PixelRect& r) const;
+};
+
+// The pixels of a `width` x `height` view that `box` may cover through `viewProj` (world to
+// clip), a pixel's margin around them; the whole view when the box reaches behind the eye.
+PixelRect screenRect(const scene::Bounds& box, const glm::mat4& viewProj, int width, int height);
+
+// `area` cut into disjoint rectangles, each wholly inside or wholly outside the union of
+// `covered`: the grid of every rectangle's edges, its cells merged along rows and then across
+// rows of the same runs.
+struct RectPartition {
+    std::vector<PixelRect> inside, outside;
+};
+RectPartition partition(const PixelRect& area, const std::vector<PixelRect>& covered);
+
+}  // namespace penumbra::render

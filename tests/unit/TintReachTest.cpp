@@ -1,0 +1,171 @@
+// TintReach: where a translucent caster's coloured shadow may fall on a receiver's box, and the
+// screen rectangles the renderer splits a receiver's pixels into. The footprint must hold every
+// receiver point whose ray to the light passes through the caster (else the renderer would shade
+// coloured shadow with a program that reads no tint), and should hold little else.
+#include "render/TintReach.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+namespace penumbra::render {
+namespace {
+
+scene::Bounds box(glm::vec3 lo, glm::vec3 hi) { return scene::Bounds{lo, hi}; }
+
+gpu::LightData directional(glm::vec3 direction, float texelScale) {
+    gpu::LightData l{};
+    l.colorType = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(gpu::kLightDirectional));
+    l.directionFar = glm::vec4(glm::normalize(direction), 100.0f);
+    l.shadow = glm::vec4(0.0f, 0.0f, 0.0f, texelScale);
+    return l;
+}
+
+gpu::LightData perspective(int type, glm::vec3 position, float texelScale) {
+    gpu::LightData l{};
+    l.colorType = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(type));
+    l.positionNear = glm::vec4(position, 0.05f);
+    l.directionFar = glm::vec4(0.0f, -1.0f, 0.0f, 50.0f);
+    l.shadow = glm::vec4(0.0f, 0.0f, 0.0f, texelScale);
+    return l;
+}
+
+bool inside(const scene::Bounds& b, glm::vec3 p, float slack = 1e-4f) {
+    return glm::all(glm::greaterThanEqual(p, b.min - slack)) && glm::all(glm::lessThanEqual(p, b.max + slack));
+}
+
+// Whether the segment from p towards the light (direction -d, or to the light's position) meets the box.
+bool segmentMeets(glm::vec3 from, glm::vec3 to, const scene::Bounds& b) {
+    float t0 = 0.0f, t1 = 1.0f;
+    const glm::vec3 d = to - from;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-9f) {
+            if (from[a] < b.min[a] || from[a] > b.max[a]) return false;
+            continue;
+        }
+        float ta = (b.min[a] - from[a]) / d[a], tb = (b.max[a] - from[a]) / d[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+TEST(TintReach, ASunStraightDownTintsTheGroundUnderThePaneAndItsPaddingOnly) {
+    const gpu::LightData sun = directional({0, -1, 0}, 0.01f);
+    const scene::Bounds pane = box({-1, 1, -0.5f}, {1, 1.02f, 0.5f});
+    const scene::Bounds ground = box({-10, 0, -10}, {10, 0, 10});
+    const scene::Bounds f = tintFootprint(sun, pane, ground, 10.0f);  // 10 texels = 0.1 world units
+    ASSERT_FALSE(f.empty());
+    EXPECT_NEAR(f.min.x, -1.1f, 1e-4f);
+    EXPECT_NEAR(f.max.x, 1.1f, 1e-4f);
+    EXPECT_NEAR(f.min.z, -0.6f, 1e-4f);
+    EXPECT_NEAR(f.max.z, 0.6f, 1e-4f);
+    EXPECT_NEAR(f.min.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(f.max.y, 0.0f, 1e-6f);
+    // A box beside the shadow's column gets nothing.
+    EXPECT_TRUE(tintFootprint(sun, pane, box({2, 0, 2}, {3, 1, 3}), 10.0f).empty());
+}
+
+TEST(TintReach, ASpotsPyramidWidensWithDistanceAndALightInsideTheCasterReachesEverything) {
+    // Light 5 above the ground, pane halfway down: its shadow is twice the pane on the ground.
+    const gpu::LightData spot = perspective(gpu::kLightSpot, {0, 5, 0}, 1e-4f);
+    const scene::Bounds pane = box({-1, 2.5f, -1}, {1, 2.5f, 1});
+    const scene::Bounds ground = box({-10, 0, -10}, {10, 0, 10});
+    const scene::Bounds f = tintFootprint(spot, pane, ground, 4.0f);
+    ASSERT_FALSE(f.empty());
+    EXPECT_LE(f.min.x, -2.0f);
+    EXPECT_GE(f.max.x, 2.0f);
+    EXPECT_GT(f.min.x, -2.1f);
+    EXPECT_LT(f.max.x, 2.1f);
+    // A point light inside a glass ball may colour anything around it.
+    const gpu::LightData point = perspective(gpu::kLightPoint, {0, 1, 0}, 1e-3f);
+    const scene::Bounds ball = box({-0.5f, 0.5f, -0.5f}, {0.5f, 1.5f, 0.5f});
+    const scene::Bounds all = tintFootprint(point, ball, ground, 4.0f);
+    EXPECT_EQ(all.min, ground.min);
+    EXPECT_EQ(all.max, ground.max);
+}
+
+// Random casters and receivers under every light type, no padding: each receiver point whose
+// segment to the light crosses the caster lies in the footprint (it is conservative).
+TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), size(0.05f, 2.0f);
+    const auto randomBox = [&](glm::vec3 centre, float spread) {
+        const glm::vec3 c = centre + spread * glm::vec3(u(rng), u(rng), u(rng));
+        const glm::vec3 h(size(rng), size(rng) * (u(rng) > 0.6f ? 0.0f : 1.0f), size(rng));  // some flat, as planes are
+        return box(c - h, c + h);
+    };
+    int behind = 0, checked = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const int kind = trial % 3;
+        const glm::vec3 lightPos(3 * u(rng), 8.0f + u(rng), 3 * u(rng));
+        const glm::vec3 sunDir = glm::normalize(glm::vec3(u(rng), -1.5f, u(rng)));
+        const gpu::LightData light = kind == 0 ? directional(sunDir, 0.01f)
+                                               : perspective(kind == 1 ? gpu::kLightSpot : gpu::kLightPoint, lightPos, 1e-3f);
+        const scene::Bounds caster = randomBox({0, 4, 0}, 2.0f);
+        const scene::Bounds receiver = randomBox({0, 1, 0}, 4.0f);
+        const scene::Bounds f = tintFootprint(light, caster, receiver, 0.0f);
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
+            const glm::vec3 p = receiver.min + t * (receiver.max - receiver.min);
+            const glm::vec3 towards = kind == 0 ? p - 100.0f * sunDir : lightPos;
+            ++checked;
+            if (!segmentMeets(p, towards, caster)) continue;
+            ++behind;
+            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << kind;
+        }
+    }
+    EXPECT_GT(behind, checked / 50);  // the trials do put receivers behind casters
+}
+
+TEST(TintReach, APartitionCoversEveryPixelOnceOnTheRightSide) {
+    const PixelRect area{10, 5, 90, 70};
+    const std::vector<PixelRect> covered{{20, 10, 40, 30}, {30, 20, 60, 50}, {0, 60, 200, 200}, {85, 0, 95, 8}};
+    const RectPartition parts = partition(area, covered);
+    std::vector<int> count(100 * 100, 0), side(100 * 100, -1);
+    for (int in = 0; in < 2; ++in)
+        for (const PixelRect& r : in ? parts.inside : parts.outside)
+            for (int y = r.y0; y < r.y1; ++y)
+                for (int x = r.x0; x < r.x1; ++x) {
+                    ++count[y * 100 + x];
+                    side[y * 100 + x] = in;
+                }
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 100; ++x) {
+            const bool inArea = x >= area.x0 && x < area.x1 && y >= area.y0 && y < area.y1;
+            ASSERT_EQ(count[y * 100 + x], inArea ? 1 : 0) << x << "," << y;
+            if (!inArea) continue;
+            const bool isCovered = std::any_of(covered.begin(), covered.end(), [&](const PixelRect& r) {
+                return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
+            });
+            ASSERT_EQ(side[y * 100 + x], isCovered ? 1 : 0) << x << "," << y;
+        }
+    EXPECT_LE(parts.inside.size() + parts.outside.size(), 12u);  // runs merged, not one per grid cell
+}
+
+TEST(TintReach, AScreenRectangleHoldsTheBoxAndABoxBehindTheEyeTakesTheWholeView) {
+    const glm::mat4 viewProj = glm::perspective(glm::radians(60.0f), 2.0f, 0.1f, 100.0f) *
+                               glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    const scene::Bounds b = box({-1, -1, -1}, {1, 1, 1});
+    const PixelRect r = screenRect(b, viewProj, 200, 100);
+    for (const glm::vec3& c : b.corners()) {
+        const glm::vec4 clip = viewProj * glm::vec4(c, 1.0f);
+        const glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(200, 100);
+        EXPECT_GE(px.x, r.x0);
+        EXPECT_LE(px.x, r.x1);
+        EXPECT_GE(px.y, r.y0);
+        EXPECT_LE(px.y, r.y1);
+    }
+    EXPECT_LT(r.x1 - r.x0, 200);
+    const PixelRect whole = screenRect(box({-1, -1, 4}, {1, 1, 7}), viewProj, 200, 100);  // the eye is inside it
+    EXPECT_EQ(whole.x0, 0);
+    EXPECT_EQ(whole.y0, 0);
+    EXPECT_EQ(whole.x1, 200);
+    EXPECT_EQ(whole.y1, 100);
+}
+
+}  // namespace
+}  // namespace penumbra::render
