@@ -177,7 +177,8 @@ public:
     // How far from a receiver's own texel, in texels of its light's map (LightSpace::texelScale),
     // the lookup may read what translucent casters wrote (tint maps, coloured layers), normal
     // offset not counted; negative where that is not bounded by the light's map (maps of their
-    // own, cascades or warps, whose texels may be coarser). The renderer shades receivers no
+    // own, cascades or warps, whose texels may be coarser) or where the lookup reads no tint
+    // (`none`): every receiver then gets the one whole program. The renderer shades receivers no
     // translucent caster's shadow reaches with a program that reads none (render/TintReach.h).
     // Default: the bilinear tint at the receiver (tintAt in shadow_filtering.glsl).
     virtual float tintReachTexels() const { return 2.0f; }
