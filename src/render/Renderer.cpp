@@ -265,7 +265,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         glEnable(GL_SCISSOR_TEST);
         glScissor(first, 0, last - first, height);
     }
-    TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, PixelRect{first, 0, last, height});
+    TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, width, height, PixelRect{first, 0, last, height});
     tintSplit.scissored = partial;
     tintShading_ = {};
     for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -399,14 +399,13 @@ static constexpr std::size_t kSplitTriangles = 4096;
 static constexpr std::size_t kMostSplitDraws = 32;
 
 Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
-                                          PixelRect area) const {
+                                          int width, int height, PixelRect area) const {
     TintSplit split;
     split.area = area;
     const float reach = technique_->tintReachTexels();
     // Without translucent casters every program reads no tint already (SCENE_TRANSLUCENT_CASTERS 0).
     if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
         return split;
-    const int width = area.x1, height = area.y1;
     std::vector<const scene::Bounds*> casters;
     for (const Draw& c : draws)
         if (c.translucent && c.castsShadow) casters.push_back(&c.worldBounds);

@@ -156,7 +156,9 @@ private:
         PixelRect area;                   // the camera passes' pixels
         bool scissored = false;           // a column range scissors them (render's `columns`)
     };
-    TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, PixelRect area) const;
+    // `area`: the pixels of the width x height frame the camera passes draw (a column range).
+    TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
+                          PixelRect area) const;
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                       const TintSplit* split = nullptr);
     void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
