@@ -267,19 +267,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     }
     TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, width, height, PixelRect{first, 0, last, height});
     tintSplit.scissored = partial;
-    tintShading_ = {};
-    for (std::size_t i = 0; i < draws.size(); ++i) {
-        if (draws[i].translucent || !draws[i].visible || !ownObject(draws[i].object)) continue;
-        using Shading = TintedPixels::Shading;
-        const Shading shading = tintSplit.draws.empty() ? Shading::Whole : tintSplit.draws[i].shading;
-        if (shading == Shading::Whole) ++tintShading_.whole;
-        else if (shading == Shading::Untinted) ++tintShading_.untinted;
-        else {
-            ++tintShading_.split;
-            tintShading_.tintedRects += tintSplit.draws[i].pixels.inside.size();
-            tintShading_.untintedRects += tintSplit.draws[i].pixels.outside.size();
-        }
-    }
+    tintShading_ = tally(tintSplit, draws);
     hdrFbo_.bind();
     glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;
@@ -442,6 +430,38 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
     return split;
 }
 
+Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<Draw>& draws) const {
+    TintShading t;
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        if (draws[i].translucent || !draws[i].visible || !ownObject(draws[i].object)) continue;
+        using Shading = TintedPixels::Shading;
+        const Shading shading = split.draws.empty() ? Shading::Whole : split.draws[i].shading;
+        if (shading == Shading::Whole) ++t.whole;
+        else if (shading == Shading::Untinted) ++t.untinted;
+        else {
+            ++t.split;
+            t.tintedRects += split.draws[i].pixels.inside.size();
+            t.untintedRects += split.draws[i].pixels.outside.size();
+        }
+    }
+    return t;
+}
+
+// Each pixel in one rectangle: the footprints' with the whole lookup, the rest without tint.
+void Renderer::drawSplit(const Draw& d, const RectPartition& pixels, const TintSplit& split) {
+    const auto scissor = [](const PixelRect& r) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    };
+    for (int untinted = 0; untinted < 2; ++untinted)
+        for (const PixelRect& r : untinted ? pixels.outside : pixels.inside) {
+            scissor(r);
+            gpu_.draw(d, lighting_.of(*d.material, false, untinted != 0));
+        }
+    if (split.scissored) scissor(split.area);
+    else glDisable(GL_SCISSOR_TEST);
+}
+
 void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                             const TintSplit* split) {
     using Shading = TintedPixels::Shading;
@@ -466,10 +486,6 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     const gl::ScopedPassState scope(state);
     const bool byTriangle = translucent && options_.transparency == TransparencyMode::SortedTriangles;
     const glm::mat4 viewProj = camera.projection(aspect) * camera.view();
-    const auto scissor = [](const PixelRect& r) {
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
-    };
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (!drawn(d)) continue;
@@ -477,20 +493,10 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);  // translucent solids show their far side through the near one
         if (byTriangle) {
             gpu_.drawTrianglesSorted(d, program, camera.position);
-        } else if (shading(i) != Shading::Split) {
+        } else if (shading(i) == Shading::Split) {
+            drawSplit(d, split->draws[i].pixels, *split);
+        } else {
             gpu_.draw(d, program);
-        } else {  // each pixel in one rectangle: the footprint's with the whole lookup, the rest without tint
-            const RectPartition& pixels = split->draws[i].pixels;
-            for (const PixelRect& r : pixels.inside) {
-                scissor(r);
-                gpu_.draw(d, program);
-            }
-            for (const PixelRect& r : pixels.outside) {
-                scissor(r);
-                gpu_.draw(d, lighting_.of(*d.material, false, true));
-            }
-            if (split->scissored) scissor(split->area);
-            else glDisable(GL_SCISSOR_TEST);
         }
     }
 }

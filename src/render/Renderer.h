@@ -159,6 +159,8 @@ private:
     // `area`: the pixels of the width x height frame the camera passes draw (a column range).
     TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
                           PixelRect area) const;
+    TintShading tally(const TintSplit& split, const std::vector<Draw>& draws) const;
+    void drawSplit(const Draw& d, const RectPartition& pixels, const TintSplit& split);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                       const TintSplit* split = nullptr);
     void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);
