@@ -23,6 +23,13 @@
 
 namespace penumbra::app {
 
+// How the frame's opaque draws met coloured shadows (render/TintReach.h): drawn with the whole
+// lookup, with none (no translucent caster's shadow reaches them), or split on the screen.
+static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
+    return {{"whole_draws", t.whole}, {"untinted_draws", t.untinted}, {"split_draws", t.split},
+            {"tinted_rectangles", t.tintedRects}, {"untinted_rectangles", t.untintedRects}};
+}
+
 using render::PassTimes;
 
 namespace fs = std::filesystem;
@@ -174,7 +181,7 @@ BatchResult renderBatch(const BatchJob& job) {
             result.shadowTriangles[l] += static_cast<double>(triangles[l]) / job.frames;
         frames.push_back({{"index", i}, {"time", t}, {"shadow_ms", p.shadowMs}, {"opaque_ms", p.opaqueMs},
                           {"translucent_ms", p.translucentMs}, {"post_ms", p.postMs}, {"total_ms", p.totalMs()},
-                          {"cpu_ms_with_readback", cpuMs}});
+                          {"cpu_ms_with_readback", cpuMs}, {"tint_shading", tintShadingJson(renderer.tintShading())}});
         result.mean.shadowMs += p.shadowMs / job.frames;
         result.mean.opaqueMs += p.opaqueMs / job.frames;
         result.mean.translucentMs += p.translucentMs / job.frames;
