@@ -14,15 +14,22 @@ struct Plane {
     float at(const glm::vec3& x) const { return glm::dot(n, x) + d; }
 };
 
-// Sutherland-Hodgman: the part of convex polygon `poly` inside `plane`.
-std::vector<glm::vec3> clip(const std::vector<glm::vec3>& poly, const Plane& plane) {
-    std::vector<glm::vec3> out;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::vec3& a = poly[i];
-        const glm::vec3& b = poly[(i + 1) % poly.size()];
+// A convex polygon of a box face clipped by up to five planes: at most 4 + 5 vertices.
+struct Polygon {
+    std::array<glm::vec3, 12> v;
+    int n = 0;
+};
+
+// Sutherland-Hodgman: the part of convex polygon `poly` inside `plane` (no allocation: this runs
+// per receiver, light, caster and face every frame).
+Polygon clip(const Polygon& poly, const Plane& plane) {
+    Polygon out;
+    for (int i = 0; i < poly.n; ++i) {
+        const glm::vec3& a = poly.v[static_cast<std::size_t>(i)];
+        const glm::vec3& b = poly.v[static_cast<std::size_t>((i + 1) % poly.n)];
         const float fa = plane.at(a), fb = plane.at(b);
-        if (fa >= 0.0f) out.push_back(a);
-        if ((fa >= 0.0f) != (fb >= 0.0f)) out.push_back(a + (b - a) * (fa / (fa - fb)));  // signs differ: fa != fb
+        if (fa >= 0.0f) out.v[static_cast<std::size_t>(out.n++)] = a;
+        if ((fa >= 0.0f) != (fb >= 0.0f)) out.v[static_cast<std::size_t>(out.n++)] = a + (b - a) * (fa / (fa - fb));  // signs differ: fa != fb
     }
     return out;
 }
@@ -34,13 +41,13 @@ scene::Bounds insideAll(const scene::Bounds& receiver, const std::vector<Plane>&
     scene::Bounds out;
     static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : kFaces) {
-        std::vector<glm::vec3> poly;
-        for (int c : face) poly.push_back(receiver.corner(c));
+        Polygon poly;
+        for (int c : face) poly.v[static_cast<std::size_t>(poly.n++)] = receiver.corner(c);
         for (const Plane& plane : planes) {
-            if (poly.empty()) break;
+            if (poly.n == 0) break;
             poly = clip(poly, plane);
         }
-        for (const glm::vec3& v : poly) out.add(v);
+        for (int i = 0; i < poly.n; ++i) out.add(poly.v[static_cast<std::size_t>(i)]);
     }
     if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
         std::all_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.at(*apex) >= 0.0f; }))
@@ -59,6 +66,7 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& ca
     if (caster.empty() || receiver.empty()) return {};
     const float texelScale = light.shadow.w;
     std::vector<Plane> planes;
+    planes.reserve(5);
     if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
         // The caster's shadow: the prism along d over its box's extent across the light, padded
         // by texels of texelScale (the same width everywhere in an orthographic map).
