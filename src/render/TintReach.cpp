@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace penumbra::render {
 
@@ -37,7 +38,7 @@ Polygon clip(const Polygon& poly, const Plane& plane) {
 // The box of `receiver` inside every plane: each face of the receiver's box clipped by them. Every
 // vertex of the (convex) intersection lies on a face of the box, or is `apex` (the light, where
 // the planes meet) inside the box.
-scene::Bounds insideAll(const scene::Bounds& receiver, const std::vector<Plane>& planes, const glm::vec3* apex) {
+scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex) {
     scene::Bounds out;
     static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : kFaces) {
@@ -56,6 +57,8 @@ scene::Bounds insideAll(const scene::Bounds& receiver, const std::vector<Plane>&
     return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
 }
 
+// A unit vector across d (render/ may not include shadows/LightSpace.h, whose anyPerpendicular
+// is the same idea: tests/architecture/include_boundaries.cmake).
 glm::vec3 perpendicular(const glm::vec3& d) {
     return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
 }
@@ -65,8 +68,6 @@ glm::vec3 perpendicular(const glm::vec3& d) {
 scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels) {
     if (caster.empty() || receiver.empty()) return {};
     const float texelScale = light.shadow.w;
-    std::vector<Plane> planes;
-    planes.reserve(5);
     if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
         // The caster's shadow: the prism along d over its box's extent across the light, padded
         // by texels of texelScale (the same width everywhere in an orthographic map).
@@ -79,7 +80,7 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& ca
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
         }
-        planes = {{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}};
+        const std::array<Plane, 4> planes{{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}}};
         return insideAll(receiver, planes, nullptr);
     }
     // Perspective lights (spot, projector, point): the pyramid from the light through the
@@ -106,7 +107,7 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& ca
     hi += pad;
     // s >= lo.x: (u - lo.x a)·(x - p) >= 0, and so on; w > 0 in front of the light.
     const auto through = [&](const glm::vec3& n) { return Plane{n, -glm::dot(n, p)}; };
-    planes = {through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a)};
+    const std::array<Plane, 5> planes{through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a)};
     return insideAll(receiver, planes, &p);
 }
 

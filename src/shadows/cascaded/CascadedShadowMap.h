@@ -16,10 +16,10 @@ public:
     std::string name() const override { return "cascaded"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    // The sun's cascades are maps of their own, their texels not bounded by the light's map.
+    float tintReachTexels() const override { return -1.0f; }
     // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
     // the other way too, a matrix product per cascade tried).
-    // The sun's cascades (warps) are maps of their own, their texels not bounded by the light's.
-    float tintReachTexels() const override { return -1.0f; }
     std::vector<std::string> lookupDefines() const override { return {"CASCADE_SELECT " + std::to_string(select_)}; }
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + cascades_.memoryBytes(); }

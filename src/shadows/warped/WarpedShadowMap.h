@@ -17,11 +17,11 @@ public:
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/warped/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
+    // The sun's warped maps are maps of their own, their texels not bounded by the light's map.
+    float tintReachTexels() const override { return -1.0f; }
     // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
     // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
     // search and its dynamically indexed matrix.
-    // The sun's cascades (warps) are maps of their own, their texels not bounded by the light's.
-    float tintReachTexels() const override { return -1.0f; }
     std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + warped_.memoryBytes(); }
