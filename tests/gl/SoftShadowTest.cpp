@@ -262,5 +262,37 @@ TEST(SoftShadows, VsmLightBleedingAndItsReduction) {
     EXPECT_LT(on, 0.5 * off) << "bleeding reduction must remove most of it";
 }
 
+// With nothing to cast a shadow on them, two lone boxes must be as lit as `none` leaves them,
+// whatever the filter. A spot and a point light whose range (8) ends a few metres behind them: the
+// receiver-plane bias extrapolates a face's depth to each tap by up to 0.01 of window depth, which
+// near the far plane of a perspective map passes 1. LEQUAL against the cleared 1.0 then failed (a
+// float depth map does not clamp the reference), and CSSM's taps took the cleared colour map for a
+// layer in front: grey shadows from nothing on 665 (pcf-poisson16) to 4,065 (cssm1 cross13)
+// pixels of this picture. compareAt and CSSM's passesIf keep the reference below the cleared depth.
+TEST(SoftShadows, NoCasterNoShadowWhereTheReceiverPlanePassesTheFarPlane) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 7, 8], "target": [0, 0.5, 0], "fov_deg": 55 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.5, "shadow": { "resolution": 512 } },
+                  { "type": "spot", "position": [3, 5, 2], "direction": [-0.6, -1, -0.4], "angle_deg": 60, "intensity": 0.5,
+                    "range": 8, "shadow": { "resolution": 256 } },
+                  { "type": "point", "position": [-3, 3, -1], "range": 8, "intensity": 0.4, "shadow": { "resolution": 128 } } ],
+      "objects": [ { "shape": "box", "size": [1.6, 1.6, 1.6], "position": [-4, 0.8, 3] },
+                   { "shape": "box", "size": [2, 2, 2], "position": [4, 1.0, 3], "rotation_deg": [0, 30, 0] } ] })");
+    constexpr int kW = 384, kH = 256;
+    const Frame unshadowed = renderFrame(s, optionsFor("none"), kW, kH);
+    int lit = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) lit += unshadowed.at(x, y).g > 0.05f;
+    ASSERT_GT(lit, 5000) << "the boxes' lit faces are in view";
+    for (const char* technique : {"hard", "pcf-poisson16", "pcf-grid", "pcss", "cssm2", "cssm2:filter=poisson16", "cssm2:filter=pcf9",
+                                  "cssm1:filter=cross13"}) {
+        const Frame f = renderFrame(s, optionsFor(technique), kW, kH);
+        int darker = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) darker += unshadowed.at(x, y).g - f.at(x, y).g > 1e-4f;
+        EXPECT_EQ(darker, 0) << technique;
+    }
+}
+
 }  // namespace
 }  // namespace penumbra::test

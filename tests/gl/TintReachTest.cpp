@@ -87,7 +87,8 @@ TEST_P(TintReach, ShadesEveryPixelAsTheWholeLookupDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, TintReach,
-                         ::testing::Values("hard", "pcf-poisson16", "pcss", "vsm", "shadow-volumes", "cssm2", "cssm1"),
+                         ::testing::Values("hard", "pcf-poisson16", "pcss", "vsm", "shadow-volumes", "cssm2", "cssm1",
+                                           "cssm2:filter=poisson16", "cssm1:filter=cross13"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return testNameOf(info.param); });
 
 // A split view's column range (render::Columns): the rectangles are the full frame's, cut to the
@@ -103,9 +104,8 @@ TEST(TintReachColumns, EachHalfOfASplitViewIsShadedAsTheWholeLookupDoes) {
 }
 
 // Techniques whose sun maps are their own (cascades, warps) give every receiver the whole lookup.
-// So do CSSM's tap filters (ColoredStochasticShadowMap::tintReachTexels).
-TEST(TintReachOff, CascadesAndCssmTapFiltersKeepTheWholeLookupEverywhere) {
-    for (const char* technique : {"cascaded", "cssm2:filter=poisson16"}) {
+TEST(TintReachOff, CascadesKeepTheWholeLookupEverywhere) {
+    for (const char* technique : {"cascaded", "lispsm"}) {
         scene::Scene s = colouredShadows();
         render::Renderer r(s, optionsFor(technique));
         render::OffscreenTarget target(64, 48);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 
 namespace penumbra::shadows {
 
@@ -248,12 +249,32 @@ std::vector<std::string> ColoredStochasticShadowMap::lookupDefines() const {
             std::string("CSSM_TINT_BEHIND_ALL ") + (tintBehindAll() ? "1" : "0")};
 }
 
-// The widest the box filters' lookup reads around the receiver's texel: the 2 x 2 tiles around it
-// (up to two tiles of 8 texels away), plus the bilinear tint's texel. The thesis's tap filters
-// (pcf9, Poisson, random, cross13, or without the separate opaque map) opt out: with
-// filter=poisson16 the untinted program changed 8 pixels of TintReachTest's scene, with a
-// footprint padded by 18 texels, and why is not known yet.
-float ColoredStochasticShadowMap::tintReachTexels() const { return usesTiles() ? 18.0f : -1.0f; }
+// The Poisson and random filters' radius in texels: the parameter, or by default about n texels
+// under the disk, r = 1.5 sqrt(n / pi), so that the taps land on distinct texels.
+float ColoredStochasticShadowMap::tapRadiusTexels() const {
+    if (radiusTexels_ > 0.0f) return radiusTexels_;
+    const int taps = filter_ == gpu::kCssmPoisson16 ? 16 : filter_ == gpu::kCssmPoisson20 ? 20 : 30;
+    return 1.5f * std::sqrt(static_cast<float>(taps) / std::numbers::pi_v<float>);
+}
+
+// The widest the lookup reads around the receiver's texel, plus the texel a tap lands in and the
+// bilinear tint's: the box filters with coverage the 2 x 2 tiles around it (up to two tiles of 8
+// texels away); the others their farthest tap (cross13: 7 texels and a jitter of at most one).
+// A receiver's plane extrapolated to a tap beyond the light's far plane used to read the cleared
+// map as a layer in front (belowClearedDepth in lookup.glsl), which is why the tap filters once
+// opted out: the whole lookup, not the untinted one, was wrong there. Without the separate opaque
+// map the colour map holds the opaque casters too, so every receiver reads it: no split.
+float ColoredStochasticShadowMap::tintReachTexels() const {
+    if (!separateOpaque_) return -1.0f;
+    if (usesTiles()) return 18.0f;
+    switch (filter_) {
+        case gpu::kCssmPcf9: return 1.0f + 2.0f;
+        case gpu::kCssmCross13: return 8.0f + 2.0f;
+        case gpu::kCssmBox16: return 4.0f + 2.0f;
+        case gpu::kCssmBox64: return 8.0f + 2.0f;
+        default: return tapRadiusTexels() + 2.0f;
+    }
+}
 
 void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
     depth_.bind();
@@ -261,7 +282,7 @@ void ColoredStochasticShadowMap::bindLookup(const gl::Program& lighting) const {
         if (!depth_.slots().shadowed(i) || !maps_[i].colour.id()) continue;
         maps_[i].colour.bind(static_cast<GLuint>(depth_.slots().rawUnit(i)));
     }
-    lighting.set("uRadiusTexels", radiusTexels_);
+    lighting.set("uRadiusTexels", tapRadiusTexels());
     lighting.set("uTileSide", tileSide());
     lighting.set("uNearestLayer", decideByNearestLayer_ ? 1 : 0);
     lighting.set("uStorageEpsilon", fp16_ ? 1.0f / 1024.0f : 0.0f);

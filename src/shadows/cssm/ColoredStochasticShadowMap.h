@@ -74,6 +74,7 @@ private:
     bool usesTiles() const;  // the lookup reads per-tile statistics (box filter, coverage, separate opaque)
     bool tintBehindAll() const { return usesTiles() && tintBehindAll_; }  // the lookup reads the tint maps
     int tileSide() const;
+    float tapRadiusTexels() const;  // the Poisson and random filters' radius
     void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole);
     void buildCasters();
     // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).

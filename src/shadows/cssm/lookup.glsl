@@ -13,7 +13,7 @@ const int kFilter = CSSM_FILTER;  // kCssm*
 const bool kSeparateOpaque = CSSM_SEPARATE_OPAQUE != 0;  // the map holds translucent layers only; opaque casters come from the depth map
 const bool kCoverage = CSSM_COVERAGE != 0;  // box filters average over the texels a layer covers; the receiver's own coverage places the edge
 uniform float uStorageEpsilon;  // relative precision of the stored depth (RGBA16F: 2^-10), 0 for fp32
-uniform float uRadiusTexels;
+uniform float uRadiusTexels;  // the Poisson and random filters' (ColoredStochasticShadowMap::tapRadiusTexels)
 uniform int uTileSide;  // 4 or 8: the side of the stratified tiles (box filters)
 #ifdef MATERIAL_TRANSLUCENT
 const bool kNearestLayer = true;  // the lighting program of translucent surfaces (render/LightingProgram.h)
@@ -46,11 +46,16 @@ bool noLayerInFront(ShadowSite s, vec2 corner, int side) {
     return true;
 }
 
+// A receiver's plane extrapolated to a tap can pass the light's far plane (a floor grazing a
+// point light's range), where the map holds its cleared 1.0: nothing can lie beyond, so the tap
+// must pass, not read the cleared texel as a layer in front.
+float belowClearedDepth(float linearDepth) { return min(linearDepth, 1.0 - 1.0 / 1048576.0); }
+
 // Per channel: 1 where the stored (nearest stochastic occluder) depth lies beyond the receiver.
 // The receiver's depth is extrapolated along its plane to each tap (receiver-plane depth bias):
 // kernels up to 7 texels wide would otherwise shadow sloped receivers with themselves.
 vec3 passesIf(vec3 stored, float receiverDepth, int light) {
-    float receiver = linearShadowDepth(light, receiverDepth);
+    float receiver = belowClearedDepth(linearShadowDepth(light, receiverDepth));
     // Half floats round the stored depth by up to an ulp: a receiver must not shadow itself by that.
     return vec3(greaterThan(stored, vec3(receiver * (1.0 - uStorageEpsilon))));
 }
@@ -88,7 +93,7 @@ vec3 faceDirection(ShadowSite s, MapFace m, vec2 texel) { return cubeFaceDirecti
 // The receiver's linear depth where its plane meets the light's ray through `texel`.
 float receiverAt(ShadowSite s, MapFace m, vec2 texel) {
     float windowDepth = s.cube ? cubeReceiverDepth(s, faceDirection(s, m, texel)) : tapReceiverDepth(s, texel - m.texel);
-    return linearShadowDepth(s.light, windowDepth) * (1.0 - uStorageEpsilon);
+    return belowClearedDepth(linearShadowDepth(s.light, windowDepth)) * (1.0 - uStorageEpsilon);
 }
 
 // The texel of mip level `level` that holds `texel` (texel units of level 0): at level
@@ -438,14 +443,11 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
             for (int i = -1; i <= 1; ++i) sum += passes(s, vec2(i, j));
     } else if (kFilter == kCssmPoisson16 || kFilter == kCssmPoisson20) {
         n = kFilter == kCssmPoisson16 ? 16 : 20;
-        // n taps need about n texels under the disk: r = sqrt(n / π), with room to spare.
-        float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
         mat2 rot = pixelRotation();
-        for (int i = 0; i < n; ++i) sum += passes(s, poissonTap(i, rot, radius));
+        for (int i = 0; i < n; ++i) sum += passes(s, poissonTap(i, rot, uRadiusTexels));
     } else if (kFilter == kCssmRandom30) {
         n = 30;
-        float radius = uRadiusTexels > 0.0 ? uRadiusTexels : 1.5 * sqrt(float(n) / 3.14159);
-        for (int i = 0; i < n; ++i) sum += passes(s, randomDiskTap(i, radius));
+        for (int i = 0; i < n; ++i) sum += passes(s, randomDiskTap(i, uRadiusTexels));
     } else {  // kCssmCross13
         n = 13;
         // Norms below 1/6 texel per pixel (strong magnification) would push δ past a texel: the

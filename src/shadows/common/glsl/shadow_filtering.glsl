@@ -100,10 +100,14 @@ vec3 cubeFaceDirection(int face, vec2 st) {
     return vec3(-c.x, -c.y, -1.0);
 }
 
-// Hardware comparison at an offset of `texels` (plus a depth offset, e.g. receiver-plane).
+// Hardware comparison at an offset of `texels` (plus a depth offset, e.g. receiver-plane). A
+// receiver's plane extrapolated past the far plane (a floor grazing a light's range) would fail
+// LEQUAL against the cleared 1.0, a shadow from nothing: float depth maps do not clamp the
+// reference (GL 4.5 §8.23.1), so it is clamped here.
 float compareAt(ShadowSite s, vec2 texels, float depthOffset) {
-    if (s.cube) return shadowCompareCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y, s.depth + depthOffset);
-    return shadowCompare2D(s.slot, vec3(s.coord.xy + texels / s.resolution, s.depth + depthOffset));
+    float reference = min(s.depth + depthOffset, 1.0);
+    if (s.cube) return shadowCompareCube(s.slot, s.coord + s.tangent * texels.x + s.bitangent * texels.y, reference);
+    return shadowCompare2D(s.slot, vec3(s.coord.xy + texels / s.resolution, reference));
 }
 
 // Raw (window-space) depth stored at an offset of `texels`.
