@@ -24,10 +24,16 @@
 namespace penumbra::app {
 
 // How the frame's opaque draws met coloured shadows (render/TintReach.h): drawn with the whole
-// lookup, with none (no translucent caster's shadow reaches them), or split on the screen.
+// lookup, with none (no translucent caster's shadow reaches them), with the behind-layers build
+// (behind every layer that may reach them), or split on the screen.
 static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
-    return {{"whole_draws", t.whole}, {"untinted_draws", t.untinted}, {"split_draws", t.split},
-            {"tinted_rectangles", t.tintedRects}, {"untinted_rectangles", t.untintedRects}};
+    return {{"whole_draws", t.whole},
+            {"untinted_draws", t.untinted},
+            {"behind_layers_draws", t.behindLayers},
+            {"split_draws", t.split},
+            {"tinted_rectangles", t.tintedRects},
+            {"untinted_rectangles", t.untintedRects},
+            {"behind_layers_rectangles", t.behindLayersRects}};
 }
 
 using render::PassTimes;

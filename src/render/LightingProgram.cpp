@@ -33,16 +33,17 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
     of(first);
 }
 
-const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, bool untinted) {
+const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    untinted = untinted && !translucent;
-    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0) + (untinted ? 8 : 0)];
+    if (translucent) tint = TintLookup::Whole;
+    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0) + 8 * static_cast<int>(tint)];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;
         if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
         if (translucent) defines.emplace_back("MATERIAL_TRANSLUCENT 1");
         if (!alphaTested) defines.emplace_back("MATERIAL_NO_ALPHA_TEST 1");
-        if (untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
+        if (tint == TintLookup::Untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
+        if (tint == TintLookup::BehindLayers) defines.emplace_back("RECEIVER_BEHIND_LAYERS 1");
         build = buildLightingProgram(lookup_, defines);
     }
     return build;

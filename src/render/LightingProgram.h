@@ -26,9 +26,14 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int su
 // layout, a transparency variant).
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
 
-// The lighting program in up to sixteen builds: with or without a diffuse texture, for opaque or
-// translucent surfaces, with or without an alpha test, for receivers no translucent caster's
-// shadow reaches or for any (RECEIVER_UNTINTED, render/TintReach.h). MATERIAL_UNTEXTURED never samples the
+// What an opaque receiver's lookup must read of the coloured shadows (render/TintReach.h): all of
+// it; none, as no translucent caster's shadow reaches it (RECEIVER_UNTINTED); or only what lies
+// in front of it, as it is behind every layer around it (RECEIVER_BEHIND_LAYERS,
+// ShadowTechnique::behindLayersBuild).
+enum class TintLookup { Whole, Untinted, BehindLayers };
+
+// The lighting program in up to 24 builds: with or without a diffuse texture, for opaque or
+// translucent surfaces, with or without an alpha test, and for opaque ones each TintLookup. MATERIAL_UNTEXTURED never samples the
 // texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment whatever the
 // uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
@@ -41,9 +46,8 @@ public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
-    // `untinted`: no translucent caster's coloured shadow reaches the pixels it shades, so every
-    // tint lookup folds to white (opaque surfaces only).
-    const gl::Program& of(const scene::Material& material, bool translucent = false, bool untinted = false);
+    // `tint`: what the pixels it shades need of the coloured shadows (opaque surfaces only).
+    const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole);
     template <class F>
     void forEachBuilt(F&& f) const {
         for (const gl::Program& p : builds_)
@@ -53,7 +57,7 @@ public:
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    gl::Program builds_[16];  // [untextured + 2 translucent + 4 alpha-tested + 8 untinted]
+    gl::Program builds_[24];  // [untextured + 2 translucent + 4 alpha-tested + 8 TintLookup]
 };
 
 }  // namespace penumbra::render

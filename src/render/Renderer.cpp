@@ -388,6 +388,35 @@ static constexpr std::size_t kMostSplitDraws = 32;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
 
+namespace {
+
+// `own` in disjoint rectangles per lookup: the pixels some not-behind footprint may cover take the
+// whole lookup, the rest of the footprints' pixels the behind-layers build, the others none.
+std::array<std::vector<PixelRect>, 3> rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind,
+                                                    const std::vector<PixelRect>& tinted) {
+    std::array<std::vector<PixelRect>, 3> rects;
+    RectPartition first = partition(own, notBehind);
+    rects[static_cast<int>(TintLookup::Whole)] = std::move(first.inside);
+    for (const PixelRect& r : first.outside) {
+        RectPartition second = partition(r, tinted);
+        auto& behind = rects[static_cast<int>(TintLookup::BehindLayers)];
+        auto& untinted = rects[static_cast<int>(TintLookup::Untinted)];
+        behind.insert(behind.end(), second.inside.begin(), second.inside.end());
+        untinted.insert(untinted.end(), second.outside.begin(), second.outside.end());
+    }
+    return rects;
+}
+
+// The bounding rectangle of `rects`, alone (empty when they are).
+std::vector<PixelRect> bounding(const std::vector<PixelRect>& rects) {
+    if (rects.empty()) return {};
+    PixelRect all = rects.front();
+    for (const PixelRect& r : rects) all = {std::min(all.x0, r.x0), std::min(all.y0, r.y0), std::max(all.x1, r.x1), std::max(all.y1, r.y1)};
+    return {all};
+}
+
+}  // namespace
+
 Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                                           int width, int height, PixelRect area) const {
     TintSplit split;
@@ -396,6 +425,7 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
     // Without translucent casters every program reads no tint already (SCENE_TRANSLUCENT_CASTERS 0).
     if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
         return split;
+    const bool behindBuild = technique_->behindLayersBuild();
     std::vector<const scene::Bounds*> casters;
     for (const Draw& c : draws)
         if (c.translucent && c.castsShadow) casters.push_back(&c.worldBounds);
@@ -404,8 +434,7 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         const Draw& d = draws[i];
         if (d.translucent || !d.visible || !ownObject(d.object)) continue;  // another renderer shades it (RegionView)
         const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
-        std::vector<PixelRect> tinted;
-        PixelRect all{area.x1, area.y1, area.x0, area.y0};  // their bounding rectangle
+        std::vector<PixelRect> tinted, notBehind;
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
@@ -415,12 +444,15 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
                 const PixelRect r = screenRect(tintFootprint(light, *caster, d.worldBounds, pad), viewProj, width, height).intersected(own);
                 if (r.empty()) continue;
                 tinted.push_back(r);
-                all = {std::min(all.x0, r.x0), std::min(all.y0, r.y0), std::max(all.x1, r.x1), std::max(all.y1, r.y1)};
+                const PixelRect front =
+                    behindBuild ? screenRect(tintFootprintNotBehind(light, *caster, d.worldBounds, pad), viewProj, width, height).intersected(own)
+                                : r;
+                if (!front.empty()) notBehind.push_back(front);
             }
         }
         TintedPixels& t = split.draws[i];
         using Shading = TintedPixels::Shading;
-        // A small receiver stays with the whole program: on llvmpipe each switch between the two
+        // A small receiver stays with the whole program: on llvmpipe each switch between the
         // programs costs more than a few thousand pixels' lookups save (scenes/street.json, 190
         // draws: hard's opaque pass 88 against 67-69 ms when every draw chose).
         const double ownArea = double(own.x1 - own.x0) * double(own.y1 - own.y0), frameArea = double(width) * double(height);
@@ -429,10 +461,17 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
             t.shading = Shading::Untinted;
             continue;
         }
-        if (d.triangles > kSplitTriangles) continue;  // whole
-        t.pixels = partition(own, tinted);
-        if (t.pixels.inside.size() + t.pixels.outside.size() > kMostSplitDraws) t.pixels = partition(own, {all});
-        t.shading = t.pixels.outside.empty() ? Shading::Whole : Shading::Split;
+        if (notBehind.empty() && d.triangles > kSplitTriangles) t.shading = Shading::BehindLayers;
+        if (d.triangles > kSplitTriangles) continue;  // whole (or behind layers), unsplit
+        t.rects = rectsByLookup(own, notBehind, tinted);
+        std::size_t count = 0;
+        for (const auto& r : t.rects) count += r.size();
+        if (count > kMostSplitDraws) t.rects = rectsByLookup(own, bounding(notBehind), bounding(tinted));
+        std::size_t kinds = 0;
+        for (const auto& r : t.rects) kinds += r.empty() ? 0 : 1;
+        const auto only = [&](TintLookup l) { return kinds == 1 && !t.rects[static_cast<int>(l)].empty(); };
+        t.shading = only(TintLookup::Whole) ? Shading::Whole : only(TintLookup::BehindLayers) ? Shading::BehindLayers
+                  : only(TintLookup::Untinted) ? Shading::Untinted : Shading::Split;
     }
     return split;
 }
@@ -445,25 +484,28 @@ Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<
         const Shading shading = split.draws.empty() ? Shading::Whole : split.draws[i].shading;
         if (shading == Shading::Whole) ++t.whole;
         else if (shading == Shading::Untinted) ++t.untinted;
+        else if (shading == Shading::BehindLayers) ++t.behindLayers;
         else {
             ++t.split;
-            t.tintedRects += split.draws[i].pixels.inside.size();
-            t.untintedRects += split.draws[i].pixels.outside.size();
+            const auto& rects = split.draws[i].rects;
+            t.tintedRects += rects[static_cast<int>(TintLookup::Whole)].size();
+            t.untintedRects += rects[static_cast<int>(TintLookup::Untinted)].size();
+            t.behindLayersRects += rects[static_cast<int>(TintLookup::BehindLayers)].size();
         }
     }
     return t;
 }
 
-// Each pixel in one rectangle: the footprints' with the whole lookup, the rest without tint.
-void Renderer::drawSplit(const Draw& d, const RectPartition& pixels, const TintSplit& split) {
+// Each pixel in one rectangle, drawn with the lookup it needs.
+void Renderer::drawSplit(const Draw& d, const TintedPixels& pixels, const TintSplit& split) {
     const auto scissor = [](const PixelRect& r) {
         glEnable(GL_SCISSOR_TEST);
         glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
     };
-    for (int untinted = 0; untinted < 2; ++untinted)
-        for (const PixelRect& r : untinted ? pixels.outside : pixels.inside) {
+    for (int lookup = 0; lookup < 3; ++lookup)
+        for (const PixelRect& r : pixels.rects[static_cast<std::size_t>(lookup)]) {
             scissor(r);
-            gpu_.draw(d, lighting_.of(*d.material, false, untinted != 0));
+            gpu_.draw(d, lighting_.of(*d.material, false, static_cast<TintLookup>(lookup)));
         }
     if (split.scissored) scissor(split.area);
     else glDisable(GL_SCISSOR_TEST);
@@ -476,10 +518,16 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         return d.translucent == translucent && d.visible && (translucent || ownObject(d.object));
     };
     const auto shading = [&](std::size_t i) { return translucent || !split || split->draws.empty() ? Shading::Whole : split->draws[i].shading; };
+    // The one lookup of a draw that is not split.
+    const auto lookupOf = [](Shading s) {
+        return s == Shading::Untinted ? TintLookup::Untinted : s == Shading::BehindLayers ? TintLookup::BehindLayers : TintLookup::Whole;
+    };
     for (std::size_t i = 0; i < draws.size(); ++i)  // builds what this pass needs before it is prepared
         if (drawn(draws[i])) {
-            if (shading(i) != Shading::Untinted) lighting_.of(*draws[i].material, draws[i].translucent);
-            if (shading(i) != Shading::Whole) lighting_.of(*draws[i].material, false, true);
+            if (shading(i) != Shading::Split) lighting_.of(*draws[i].material, draws[i].translucent, lookupOf(shading(i)));
+            else
+                for (int l = 0; l < 3; ++l)
+                    if (!split->draws[i].rects[static_cast<std::size_t>(l)].empty()) lighting_.of(*draws[i].material, false, static_cast<TintLookup>(l));
         }
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
@@ -496,12 +544,12 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (!drawn(d)) continue;
-        const gl::Program& program = lighting_.of(*d.material, d.translucent, shading(i) == Shading::Untinted);
+        const gl::Program& program = lighting_.of(*d.material, d.translucent, lookupOf(shading(i)));
         if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);  // translucent solids show their far side through the near one
         if (byTriangle) {
             gpu_.drawTrianglesSorted(d, program, camera.position);
         } else if (shading(i) == Shading::Split) {
-            drawSplit(d, split->draws[i].pixels, *split);
+            drawSplit(d, split->draws[i], *split);
         } else {
             gpu_.draw(d, program);
         }

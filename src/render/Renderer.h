@@ -133,10 +133,11 @@ public:
     // Triangles drawn into shadow maps in the last frame, per light (all passes and faces).
     const std::vector<std::size_t>& shadowTriangles() const { return shadowTriangles_; }
     // How the last frame shaded its opaque draws where translucent casters may tint them
-    // (RenderOptions::tintOnlyWhereReached, render/TintReach.h): draws with the whole lookup, draws
-    // with the untinted program, draws split on the screen between the two (rectangles of each).
+    // (RenderOptions::tintOnlyWhereReached, render/TintReach.h): draws with the whole lookup, with
+    // the untinted program, with the behind-layers one, and draws split on the screen between them
+    // (rectangles of each).
     struct TintShading {
-        std::size_t whole = 0, untinted = 0, split = 0, tintedRects = 0, untintedRects = 0;
+        std::size_t whole = 0, untinted = 0, behindLayers = 0, split = 0, tintedRects = 0, untintedRects = 0, behindLayersRects = 0;
     };
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
@@ -148,8 +149,9 @@ private:
     void ensureTargets(int width, int height);
     // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
     struct TintedPixels {
-        enum class Shading { Whole, Untinted, Split } shading = Shading::Whole;
-        RectPartition pixels;  // Split: the draw's pixels, inside some footprint's rectangle or outside all
+        enum class Shading { Whole, Untinted, BehindLayers, Split } shading = Shading::Whole;
+        // Split: the draw's pixels in disjoint rectangles, per the lookup they need (TintLookup's order).
+        std::array<std::vector<PixelRect>, 3> rects;
     };
     struct TintSplit {
         std::vector<TintedPixels> draws;  // per draw; empty: every draw whole
@@ -160,7 +162,7 @@ private:
     TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
                           PixelRect area) const;
     TintShading tally(const TintSplit& split, const std::vector<Draw>& draws) const;
-    void drawSplit(const Draw& d, const RectPartition& pixels, const TintSplit& split);
+    void drawSplit(const Draw& d, const TintedPixels& pixels, const TintSplit& split);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                       const TintSplit* split = nullptr);
     void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);

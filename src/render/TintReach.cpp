@@ -15,9 +15,10 @@ struct Plane {
     float at(const glm::vec3& x) const { return glm::dot(n, x) + d; }
 };
 
-// A convex polygon of a box face clipped by up to five planes: at most 4 + 5 vertices.
+// A convex polygon of a box face clipped by up to six planes (4 + 6 vertices), or of a plane's
+// quad clipped by a box's six faces and six planes (4 + 12).
 struct Polygon {
-    std::array<glm::vec3, 12> v;
+    std::array<glm::vec3, 16> v;
     int n = 0;
 };
 
@@ -35,10 +36,16 @@ Polygon clip(const Polygon& poly, const Plane& plane) {
     return out;
 }
 
+// A unit vector across d (render/ may not include shadows/LightSpace.h, whose anyPerpendicular
+// is the same idea: tests/architecture/include_boundaries.cmake).
+glm::vec3 perpendicular(const glm::vec3& d) {
+    return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+}
+
 // The box of `receiver` inside every plane: each face of the receiver's box clipped by them. Every
 // vertex of the (convex) intersection lies on a face of the box, or is `apex` (the light, where
-// the planes meet) inside the box.
-scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex) {
+// the other planes meet) inside the box, or lies on `cut` (one of `planes`, not through the apex).
+scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
     scene::Bounds out;
     static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : kFaces) {
@@ -53,21 +60,38 @@ scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> pl
     if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
         std::all_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.at(*apex) >= 0.0f; }))
         out.add(*apex);
+    if (cut) {
+        // The cut's own cross-section: a quad on its plane, wider than the box, clipped by the
+        // box's faces and every plane.
+        const glm::vec3 n = glm::normalize(cut->n), c = receiver.center();
+        const glm::vec3 onPlane = c - n * (cut->at(c) / glm::length(cut->n));
+        const glm::vec3 e1 = perpendicular(n) * (glm::length(receiver.max - receiver.min) + 1.0f), e2 = glm::cross(n, e1);
+        Polygon poly;
+        poly.n = 4;
+        poly.v = {onPlane - e1 - e2, onPlane + e1 - e2, onPlane + e1 + e2, onPlane - e1 + e2};
+        for (int a = 0; a < 3 && poly.n > 0; ++a) {
+            glm::vec3 axis(0.0f);
+            axis[a] = 1.0f;
+            poly = clip(poly, Plane{axis, -receiver.min[a]});
+            if (poly.n > 0) poly = clip(poly, Plane{-axis, receiver.max[a]});
+        }
+        for (const Plane& plane : planes) {
+            if (poly.n == 0) break;
+            if (&plane != cut) poly = clip(poly, plane);
+        }
+        for (int i = 0; i < poly.n; ++i) out.add(poly.v[static_cast<std::size_t>(i)]);
+    }
     if (out.empty()) return out;
     return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
 }
 
-// A unit vector across d (render/ may not include shadows/LightSpace.h, whose anyPerpendicular
-// is the same idea: tests/architecture/include_boundaries.cmake).
-glm::vec3 perpendicular(const glm::vec3& d) {
-    return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
-}
 
-}  // namespace
-
-scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels) {
+// tintFootprint, with the receiver cut further by `limit` when it is given (a half-space).
+scene::Bounds footprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels,
+                        const Plane* limit) {
     if (caster.empty() || receiver.empty()) return {};
     const float texelScale = light.shadow.w;
+    const Plane none{glm::vec3(0.0f), 1.0f};  // every point inside
     if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
         // The caster's shadow: the prism along d over its box's extent across the light, padded
         // by texels of texelScale (the same width everywhere in an orthographic map).
@@ -80,8 +104,8 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& ca
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
         }
-        const std::array<Plane, 4> planes{{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}}};
-        return insideAll(receiver, planes, nullptr);
+        const std::array<Plane, 5> planes{{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}, limit ? *limit : none}};
+        return insideAll(receiver, planes, nullptr, limit ? &planes[4] : nullptr);
     }
     // Perspective lights (spot, projector, point): the pyramid from the light through the
     // caster's box, in the projective coordinates (s, t) = (u, v)·(x - p) / a·(x - p) of an axis a
@@ -107,8 +131,58 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& ca
     hi += pad;
     // s >= lo.x: (u - lo.x a)·(x - p) >= 0, and so on; w > 0 in front of the light.
     const auto through = [&](const glm::vec3& n) { return Plane{n, -glm::dot(n, p)}; };
-    const std::array<Plane, 5> planes{through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a)};
-    return insideAll(receiver, planes, &p);
+    const std::array<Plane, 6> planes{
+        through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a), limit ? *limit : none};
+    return insideAll(receiver, planes, &p, limit ? &planes[5] : nullptr);
+}
+
+}  // namespace
+
+scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels) {
+    return footprint(light, caster, receiver, padTexels, nullptr);
+}
+
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver,
+                                     float padTexels) {
+    if (caster.empty() || receiver.empty()) return {};
+    // How far in front of its geometry a receiver's lookup may land, in texels at its depth: the
+    // constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and the normal offset,
+    // and 2 for the rasterised layers' and the comparison's rounding.
+    const float texels = light.shadow.x + 10.0f * light.shadow.y + light.shadow.z + 2.0f;
+    const float texelScale = light.shadow.w;
+    const glm::vec3 p = glm::vec3(light.positionNear);
+    const auto farthestOf = [&](const auto& depthOf) {
+        float most = std::numeric_limits<float>::lowest();
+        for (const glm::vec3& c : caster.corners()) most = std::max(most, depthOf(c));
+        return most;
+    };
+    const int type = static_cast<int>(light.colorType.w);
+    if (type == gpu::kLightDirectional) {
+        // Orthographic depth is linear in distance along d; colouredByTint's test allows 2^-10 of
+        // the depth range besides (the half-float alpha), given here 4 times over.
+        const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
+        const float limit = farthestOf([&](const glm::vec3& c) { return glm::dot(d, c); }) + texels * texelScale +
+                            (light.directionFar.w - light.positionNear.w) / 256.0f;
+        const Plane behind{-d, limit};
+        return footprint(light, caster, receiver, padTexels, &behind);
+    }
+    // Perspective maps: a texel and the test's tolerance (2^-10 of 1 - window depth, about 2^-10
+    // of the view depth z) both grow with z, so the limit is the caster's farthest z scaled up.
+    const float relative = 1.0f + 2.0f * (texels * texelScale + 1.0f / 256.0f);
+    if (type == gpu::kLightPoint) {
+        // A cube map's depth is the largest axis distance: the points within a limit form a box.
+        const float limit = relative * farthestOf([&](const glm::vec3& c) {
+                                const glm::vec3 q = glm::abs(c - p);
+                                return std::max(q.x, std::max(q.y, q.z));
+                            });
+        const scene::Bounds within{glm::max(receiver.min, p - limit), glm::min(receiver.max, p + limit)};
+        if (glm::any(glm::greaterThan(within.min, within.max))) return {};
+        return footprint(light, caster, within, padTexels, nullptr);
+    }
+    const glm::vec3 axis = glm::normalize(glm::vec3(light.directionFar));
+    const float limit = relative * farthestOf([&](const glm::vec3& c) { return glm::dot(axis, c - p); });
+    const Plane behind{-axis, glm::dot(axis, p) + limit};  // z(x) = axis·(x - p) <= limit
+    return footprint(light, caster, receiver, padTexels, &behind);
 }
 
 PixelRect PixelRect::intersected(const PixelRect& r) const {

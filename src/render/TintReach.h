@@ -31,6 +31,15 @@ namespace penumbra::render {
 // the receiver's depth past its own.)
 scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels);
 
+// The part of tintFootprint's box whose points may lie not clearly behind every layer of the
+// caster as the light sees them: within the caster's farthest light depth plus the distance a
+// lookup may land in front of its receiver (the light's bias knobs) and the tint test's tolerance.
+// Elsewhere in the footprint a receiver is behind every layer around it, where CSSM's lookup takes
+// the tint map's product and its fallback loop is never due (ShadowTechnique::behindLayersBuild).
+// A half-space along the light's direction or axis cuts the receiver (a box around a point light).
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver,
+                                     float padTexels);
+
 // A pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

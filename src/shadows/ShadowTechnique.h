@@ -182,6 +182,11 @@ public:
     // translucent caster's shadow reaches with a program that reads none (render/TintReach.h).
     // Default: the bilinear tint at the receiver (tintAt in shadow_filtering.glsl).
     virtual float tintReachTexels() const { return 2.0f; }
+    // Whether the lookup has a cheaper build for receivers behind every translucent layer around
+    // them (RECEIVER_BEHIND_LAYERS), giving the same pixels there: CSSM's tint product without its
+    // fallback loop. The renderer draws with it where render/TintReach.h shows every caster whose
+    // shadow may reach a receiver lies in front of it (tintFootprintNotBehind).
+    virtual bool behindLayersBuild() const { return false; }
     // Binds textures and sets uniforms the lookup needs on the lighting program.
     virtual void bindLookup(const gl::Program& lighting) const = 0;
     virtual std::size_t memoryBytes() const = 0;

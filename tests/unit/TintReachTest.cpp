@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <cstdio>
 #include <random>
 
 namespace penumbra::render {
@@ -119,6 +120,70 @@ TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
         }
     }
     EXPECT_GT(behind, checked / 50);  // the trials do put receivers behind casters
+}
+
+// The light depth the lookups compare (shadow_coord.glsl): along a sun's direction, along a spot's
+// axis, the largest axis distance from a point light.
+float lightDepth(const gpu::LightData& l, glm::vec3 p) {
+    const int type = static_cast<int>(l.colorType.w);
+    if (type == gpu::kLightDirectional) return glm::dot(glm::vec3(l.directionFar), p);
+    const glm::vec3 q = p - glm::vec3(l.positionNear);
+    if (type == gpu::kLightPoint) return std::max(std::abs(q.x), std::max(std::abs(q.y), std::abs(q.z)));
+    return glm::dot(glm::vec3(l.directionFar), q);
+}
+
+TEST(TintReach, GroundBelowAFloatingPaneIsBehindItButNotAtTheFootOfABlockStandingOnIt) {
+    const scene::Bounds ground = box({-10, 0, -10}, {10, 0, 10});
+    const scene::Bounds pane = box({-1, 2.5f, -1}, {1, 2.52f, 1});
+    const scene::Bounds block = box({2, 0, 2}, {3, 1, 3});
+    for (const gpu::LightData& light : {directional({0.3f, -1, 0.2f}, 0.01f), perspective(gpu::kLightSpot, {0, 5, 0}, 1e-3f),
+                                        perspective(gpu::kLightPoint, {0, 5, 0}, 1e-3f)}) {
+        const int type = static_cast<int>(light.colorType.w);
+        ASSERT_FALSE(tintFootprint(light, pane, ground, 4.0f).empty()) << type;
+        EXPECT_TRUE(tintFootprintNotBehind(light, pane, ground, 4.0f).empty()) << type << ": the ground lies behind the pane";
+        // The ground at the block's foot is as far from the light as the block's bottom.
+        const scene::Bounds foot = tintFootprintNotBehind(light, block, ground, 4.0f);
+        ASSERT_FALSE(foot.empty()) << type;
+        EXPECT_TRUE(inside(foot, {2.5f, 0, 2.5f})) << type;
+        EXPECT_TRUE(inside(tintFootprint(light, block, ground, 4.0f), foot.min) && inside(tintFootprint(light, block, ground, 4.0f), foot.max))
+            << type << ": within the footprint";
+    }
+}
+
+// Random casters and receivers, no padding or bias: each receiver point of the footprint's rays
+// (its segment to the light crosses the caster) that lies no deeper than the caster's farthest
+// corner is in the not-behind box; there a layer may lie behind or beside the receiver.
+TEST(TintReach, EveryReceiverPointNotBehindTheCasterIsInItsNotBehindFootprint) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), size(0.05f, 2.0f);
+    const auto randomBox = [&](glm::vec3 centre, float spread) {
+        const glm::vec3 c = centre + spread * glm::vec3(u(rng), u(rng), u(rng));
+        const glm::vec3 h(size(rng), size(rng) * (u(rng) > 0.6f ? 0.0f : 1.0f), size(rng));
+        return box(c - h, c + h);
+    };
+    int notBehind = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const int kind = trial % 3;
+        const glm::vec3 lightPos(3 * u(rng), 8.0f + u(rng), 3 * u(rng));
+        const glm::vec3 sunDir = glm::normalize(glm::vec3(u(rng), -1.5f, u(rng)));
+        const gpu::LightData light = kind == 0 ? directional(sunDir, 0.01f)
+                                               : perspective(kind == 1 ? gpu::kLightSpot : gpu::kLightPoint, lightPos, 1e-3f);
+        const scene::Bounds caster = randomBox({0, 3, 0}, 2.0f);  // overlapping receivers often
+        const scene::Bounds receiver = randomBox({0, 2, 0}, 2.0f);
+        const scene::Bounds f = tintFootprintNotBehind(light, caster, receiver, 0.0f);
+        float farthest = std::numeric_limits<float>::lowest();
+        for (const glm::vec3& c : caster.corners()) farthest = std::max(farthest, lightDepth(light, c));
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
+            const glm::vec3 p = receiver.min + t * (receiver.max - receiver.min);
+            const glm::vec3 towards = kind == 0 ? p - 100.0f * sunDir : lightPos;
+            if (!segmentMeets(p, towards, caster) || lightDepth(light, p) > farthest) continue;
+            ++notBehind;
+            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << kind;
+        }
+    }
+    std::printf("%d receiver points not behind their caster\n", notBehind);
+    EXPECT_GT(notBehind, 1000);  // the trials do put receivers among the casters' layers
 }
 
 TEST(TintReach, APartitionCoversEveryPixelOnceOnTheRightSide) {

@@ -413,6 +413,13 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // casters in the depth map, the coloured term is exactly 1 and only the hard test is left.
     if (kSeparateOpaque) return vec3(compareAt(s, vec2(0.0), 0.0));
 #endif
+#if defined(RECEIVER_BEHIND_LAYERS) && !defined(MATERIAL_TRANSLUCENT)
+    // Every translucent layer around this receiver lies in front of it (render/TintReach.h,
+    // tintFootprintNotBehind; ColoredStochasticShadowMap::behindLayersBuild): colouredByTint's
+    // behindEveryLayer holds, so the tint's product is its answer, without the fallback loop
+    // that llvmpipe would run masked for every pixel.
+    return compareAt(s, vec2(0.0), 0.0) * tintAround(s).rgb;
+#endif
     vec3 sum = vec3(0.0);
     int n;
     if (kFilter == kCssmBox16 || kFilter == kCssmBox64) {
