@@ -64,6 +64,7 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);
+            d.meshBounds = mesh.bounds;
             for (int i = 0; i < 8; ++i) d.farthest = std::max(d.farthest, glm::length(d.worldBounds.corner(i) - eye));
             d.triangles = mesh.parts[p].indexCount / 3;
             out.push_back(d);

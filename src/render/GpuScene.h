@@ -29,6 +29,7 @@ struct Draw {
     // faces show.)
     bool solid = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
+    scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)
     std::size_t triangles = 0;
 };
 

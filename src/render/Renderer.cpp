@@ -384,18 +384,29 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
 // transforms every vertex of a draw however little of it the scissor keeps.
 static constexpr std::size_t kSplitTriangles = 4096;
 // Beyond this many rectangles a receiver is split around the footprints' bounding rectangle alone.
-static constexpr std::size_t kMostSplitDraws = 32;
+static constexpr std::size_t kMostSplitDraws = 128;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
 
 namespace {
 
+// The grid the not-behind rectangles are grown to (pixels).
+constexpr int kSnap = 32;
+
 // `own` in disjoint rectangles per lookup: the pixels some not-behind footprint may cover take the
 // whole lookup, the rest of the footprints' pixels the behind-layers build, the others none.
 std::array<std::vector<PixelRect>, 3> rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind,
                                                     const std::vector<PixelRect>& tinted) {
+    // The not-behind rectangles come per cell of a footprint, many and overlapping: grown to a
+    // grid of kSnap pixels, they share edges and merge into few runs.
+    std::vector<PixelRect> snapped;
+    for (const PixelRect& r : notBehind) {
+        const PixelRect g = PixelRect{r.x0 / kSnap * kSnap, r.y0 / kSnap * kSnap, (r.x1 + kSnap - 1) / kSnap * kSnap,
+                                      (r.y1 + kSnap - 1) / kSnap * kSnap}.intersected(own);
+        if (std::none_of(snapped.begin(), snapped.end(), [&](const PixelRect& s) { return s.contains(g); })) snapped.push_back(g);
+    }
     std::array<std::vector<PixelRect>, 3> rects;
-    RectPartition first = partition(own, notBehind);
+    RectPartition first = partition(own, snapped);
     rects[static_cast<int>(TintLookup::Whole)] = std::move(first.inside);
     for (const PixelRect& r : first.outside) {
         RectPartition second = partition(r, tinted);
@@ -405,6 +416,71 @@ std::array<std::vector<PixelRect>, 3> rectsByLookup(const PixelRect& own, const 
         untinted.insert(untinted.end(), second.outside.begin(), second.outside.end());
     }
     return rects;
+}
+
+// The not-behind boxes (tintFootprintNotBehind) of the parts of `box`: the box's own when it is
+// behind or at the finest level, else those of its quarters across its two longest sides. Where
+// a receiver is not behind a caster is a strip at the caster's foot or across it, whose box may
+// span the whole footprint; halving around it keeps the rest behind (8 x 8 cells at most).
+constexpr int kFinestLevel = 3;
+template <class Emit>
+void notBehindCells(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& box, float pad, int level, Emit&& emit) {
+    const scene::Bounds front = tintFootprintNotBehind(light, caster, box, pad);
+    if (front.empty()) return;
+    if (level == kFinestLevel) {
+        emit(front);
+        return;
+    }
+    const glm::vec3 size = box.max - box.min;
+    const int a = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+    const int b = a == 0 ? (size.y >= size.z ? 1 : 2) : a == 1 ? (size.x >= size.z ? 0 : 2) : (size.x >= size.y ? 0 : 1);
+    for (int q = 0; q < 4; ++q) {
+        scene::Bounds c = box;
+        const float midA = 0.5f * (box.min[a] + box.max[a]), midB = 0.5f * (box.min[b] + box.max[b]);
+        (q & 1 ? c.min[a] : c.max[a]) = midA;
+        (q & 2 ? c.min[b] : c.max[b]) = midB;
+        notBehindCells(light, caster, c, pad, level + 1, emit);
+    }
+}
+
+// The screen rectangles of a receiver's footprints (tinted), and of their parts that may be not
+// behind the caster (notBehind; the footprints themselves without a behind-layers build), within
+// `own`, over every shadowed light and translucent caster.
+struct ReceiverFootprints {
+    std::vector<PixelRect> tinted, notBehind;
+};
+ReceiverFootprints footprintsOf(const scene::Bounds& receiver, const PixelRect& own, const std::vector<OrientedBox>& casters,
+                                const gpu::LightBlock& block, float reach, bool behindBuild, const glm::mat4& viewProj, int width,
+                                int height) {
+    ReceiverFootprints f;
+    for (int l = 0; l < block.count.x; ++l) {
+        const gpu::LightData& light = block.lights[l];
+        if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
+        // The normal offset moves the receiver's lookup that many texels besides.
+        const float pad = reach + light.shadow.z + 2.0f;
+        for (const OrientedBox& caster : casters) {
+            const scene::Bounds footprint = tintFootprint(light, caster, receiver, pad);
+            const PixelRect r = screenRect(footprint, viewProj, width, height).intersected(own);
+            if (r.empty()) continue;
+            f.tinted.push_back(r);
+            if (!behindBuild) {
+                f.notBehind.push_back(r);
+                continue;
+            }
+            notBehindCells(light, caster, footprint, pad, 0, [&](const scene::Bounds& front) {
+                const PixelRect cell = screenRect(front, viewProj, width, height).intersected(own);
+                if (!cell.empty()) f.notBehind.push_back(cell);
+            });
+        }
+    }
+    return f;
+}
+
+// The pixels of disjoint rectangles.
+double pixelsOf(const std::vector<PixelRect>& rects) {
+    double sum = 0.0;
+    for (const PixelRect& r : rects) sum += double(r.x1 - r.x0) * double(r.y1 - r.y0);
+    return sum;
 }
 
 // The bounding rectangle of `rects`, alone (empty when they are).
@@ -426,37 +502,23 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
     if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
         return split;
     const bool behindBuild = technique_->behindLayersBuild();
-    std::vector<const scene::Bounds*> casters;
+    std::vector<OrientedBox> casters;
     for (const Draw& c : draws)
-        if (c.translucent && c.castsShadow) casters.push_back(&c.worldBounds);
+        if (c.translucent && c.castsShadow) casters.emplace_back(c.meshBounds, c.model);
     split.draws.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (d.translucent || !d.visible || !ownObject(d.object)) continue;  // another renderer shades it (RegionView)
         const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
-        std::vector<PixelRect> tinted, notBehind;
-        for (int l = 0; l < block.count.x; ++l) {
-            const gpu::LightData& light = block.lights[l];
-            if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
-            // The normal offset moves the receiver's lookup that many texels besides.
-            const float pad = reach + light.shadow.z + 2.0f;
-            for (const scene::Bounds* caster : casters) {
-                const PixelRect r = screenRect(tintFootprint(light, *caster, d.worldBounds, pad), viewProj, width, height).intersected(own);
-                if (r.empty()) continue;
-                tinted.push_back(r);
-                const PixelRect front =
-                    behindBuild ? screenRect(tintFootprintNotBehind(light, *caster, d.worldBounds, pad), viewProj, width, height).intersected(own)
-                                : r;
-                if (!front.empty()) notBehind.push_back(front);
-            }
-        }
-        TintedPixels& t = split.draws[i];
-        using Shading = TintedPixels::Shading;
         // A small receiver stays with the whole program: on llvmpipe each switch between the
         // programs costs more than a few thousand pixels' lookups save (scenes/street.json, 190
         // draws: hard's opaque pass 88 against 67-69 ms when every draw chose).
         const double ownArea = double(own.x1 - own.x0) * double(own.y1 - own.y0), frameArea = double(width) * double(height);
         if (own.empty() || ownArea < kLeastSwitchedShare * frameArea) continue;
+        const ReceiverFootprints f = footprintsOf(d.worldBounds, own, casters, block, reach, behindBuild, viewProj, width, height);
+        const std::vector<PixelRect>&tinted = f.tinted, &notBehind = f.notBehind;
+        TintedPixels& t = split.draws[i];
+        using Shading = TintedPixels::Shading;
         if (tinted.empty()) {
             t.shading = Shading::Untinted;
             continue;
@@ -467,6 +529,11 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         std::size_t count = 0;
         for (const auto& r : t.rects) count += r.size();
         if (count > kMostSplitDraws) t.rects = rectsByLookup(own, bounding(notBehind), bounding(tinted));
+        // Behind-layers rectangles covering little of the frame are not worth their draws and
+        // program switches (scenes/street.json: 21 receivers split three ways, cssm2's opaque pass
+        // 91 against 85-87 ms): those pixels keep the whole lookup.
+        if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * frameArea)
+            t.rects = rectsByLookup(own, tinted, tinted);
         std::size_t kinds = 0;
         for (const auto& r : t.rects) kinds += r.empty() ? 0 : 1;
         const auto only = [&](TintLookup l) { return kinds == 1 && !t.rects[static_cast<int>(l)].empty(); };

@@ -42,21 +42,29 @@ glm::vec3 perpendicular(const glm::vec3& d) {
     return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
 }
 
-// The box of `receiver` inside every plane: each face of the receiver's box clipped by them. Every
-// vertex of the (convex) intersection lies on a face of the box, or is `apex` (the light, where
-// the other planes meet) inside the box, or lies on `cut` (one of `planes`, not through the apex).
-scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
-    scene::Bounds out;
+// Every vertex of the part of the hexahedron `box` (corners in Bounds::corner's order: a box or
+// its affine image) inside every plane, face by face (Sutherland-Hodgman). With the apex where
+// the planes meet, these are all the vertices of the convex intersection but those inside `box`
+// on a plane that does not pass through the apex.
+template <class Visit>
+void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, Visit&& visit) {
     static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : kFaces) {
         Polygon poly;
-        for (int c : face) poly.v[static_cast<std::size_t>(poly.n++)] = receiver.corner(c);
+        for (int c : face) poly.v[static_cast<std::size_t>(poly.n++)] = box[static_cast<std::size_t>(c)];
         for (const Plane& plane : planes) {
             if (poly.n == 0) break;
             poly = clip(poly, plane);
         }
-        for (int i = 0; i < poly.n; ++i) out.add(poly.v[static_cast<std::size_t>(i)]);
+        for (int i = 0; i < poly.n; ++i) visit(poly.v[static_cast<std::size_t>(i)]);
     }
+}
+
+// The box of `receiver` inside every plane. Every vertex of the (convex) intersection lies on a
+// face of the box, or is `apex`, or lies on `cut` (one of `planes`, not through the apex).
+scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
+    scene::Bounds out;
+    visitFaces(receiver.corners(), planes, [&](const glm::vec3& v) { out.add(v); });
     if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
         std::all_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.at(*apex) >= 0.0f; }))
         out.add(*apex);
@@ -85,13 +93,17 @@ scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> pl
     return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
 }
 
-
-// tintFootprint, with the receiver cut further by `limit` when it is given (a half-space).
-scene::Bounds footprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels,
-                        const Plane* limit) {
-    if (caster.empty() || receiver.empty()) return {};
+// The shadow volume of a caster with corners `caster`, padded by `padTexels`: up to five planes
+// (a sun's prism: four) and the apex where they meet (perspective lights). False when it is
+// unbounded: a caster reaching beside or behind the light (a point light inside a glass ball).
+struct ShadowVolume {
+    std::array<Plane, 6> planes;  // room for one more: a cut
+    int count = 0;
+    bool hasApex = false;
+    glm::vec3 apex{0.0f};
+};
+bool shadowVolume(const gpu::LightData& light, const OrientedBox::Corners& caster, float padTexels, ShadowVolume& out) {
     const float texelScale = light.shadow.w;
-    const Plane none{glm::vec3(0.0f), 1.0f};  // every point inside
     if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
         // The caster's shadow: the prism along d over its box's extent across the light, padded
         // by texels of texelScale (the same width everywhere in an orthographic map).
@@ -99,28 +111,28 @@ scene::Bounds footprint(const gpu::LightData& light, const scene::Bounds& caster
         const glm::vec3 u = perpendicular(d), v = glm::cross(d, u);
         const float pad = padTexels * texelScale;
         glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& c : caster.corners()) {
+        for (const glm::vec3& c : caster) {
             const glm::vec2 q(glm::dot(u, c), glm::dot(v, c));
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
         }
-        const std::array<Plane, 5> planes{{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}, limit ? *limit : none}};
-        return insideAll(receiver, planes, nullptr, limit ? &planes[4] : nullptr);
+        out.planes = {{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}}};
+        out.count = 4;
+        return true;
     }
     // Perspective lights (spot, projector, point): the pyramid from the light through the
     // caster's box, in the projective coordinates (s, t) = (u, v)·(x - p) / a·(x - p) of an axis a
     // through the box's centre, padded by texels of texelScale per unit distance (a texel spans at
     // most that angle, dθ = ds cos²θ: hence the 1 + tan² on the pad).
     const glm::vec3 p = glm::vec3(light.positionNear);
-    const glm::vec3 toCaster = caster.center() - p;
-    if (glm::length(toCaster) <= 1e-6f) return receiver;
-    const glm::vec3 a = glm::normalize(toCaster), u = perpendicular(a), v = glm::cross(a, u);
+    glm::vec3 centre(0.0f);
+    for (const glm::vec3& c : caster) centre += c * 0.125f;
+    if (glm::length(centre - p) <= 1e-6f) return false;
+    const glm::vec3 a = glm::normalize(centre - p), u = perpendicular(a), v = glm::cross(a, u);
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const glm::vec3& c : caster.corners()) {
+    for (const glm::vec3& c : caster) {
         const float w = glm::dot(a, c - p);
-        // A box reaching beside or behind the light (a point light inside a glass ball) has no
-        // bounded pyramid: all of the receiver may be tinted.
-        if (w <= 1e-3f * glm::length(c - p)) return receiver;
+        if (w <= 1e-3f * glm::length(c - p)) return false;
         const glm::vec2 q(glm::dot(u, c - p) / w, glm::dot(v, c - p) / w);
         lo = glm::min(lo, q);
         hi = glm::max(hi, q);
@@ -131,38 +143,73 @@ scene::Bounds footprint(const gpu::LightData& light, const scene::Bounds& caster
     hi += pad;
     // s >= lo.x: (u - lo.x a)·(x - p) >= 0, and so on; w > 0 in front of the light.
     const auto through = [&](const glm::vec3& n) { return Plane{n, -glm::dot(n, p)}; };
-    const std::array<Plane, 6> planes{
-        through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a), limit ? *limit : none};
-    return insideAll(receiver, planes, &p, limit ? &planes[5] : nullptr);
+    out.planes = {through(u - lo.x * a), through(hi.x * a - u), through(v - lo.y * a), through(hi.y * a - v), through(a)};
+    out.count = 5;
+    out.hasApex = true;
+    out.apex = p;
+    return true;
+}
+
+// tintFootprint, with the receiver cut further by `limit` when it is given (a half-space).
+scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels,
+                        const Plane* limit) {
+    if (caster.empty || receiver.empty()) return {};
+    ShadowVolume volume;
+    if (!shadowVolume(light, caster.corners, padTexels, volume)) return receiver;  // all of it may be tinted
+    if (limit) volume.planes[static_cast<std::size_t>(volume.count++)] = *limit;
+    const std::span<const Plane> planes(volume.planes.data(), static_cast<std::size_t>(volume.count));
+    return insideAll(receiver, planes, volume.hasApex ? &volume.apex : nullptr, limit ? &planes.back() : nullptr);
+}
+
+// The largest `depthOf` over the part of `caster` inside the shadow volume of `receiver` (the
+// caster's points on rays that pass within the padding of the receiver); lowest() when none.
+template <class Depth>
+float farthestAbove(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels, Depth&& depthOf) {
+    float most = std::numeric_limits<float>::lowest();
+    const auto keep = [&](const glm::vec3& v) { most = std::max(most, depthOf(v)); };
+    ShadowVolume volume;
+    if (!shadowVolume(light, receiver.corners(), padTexels, volume)) {
+        for (const glm::vec3& c : caster.corners) keep(c);
+        return most;
+    }
+    // The apex (the light) is never the farthest point: the faces' vertices are all that count.
+    visitFaces(caster.corners, std::span<const Plane>(volume.planes.data(), static_cast<std::size_t>(volume.count)), keep);
+    return most;
 }
 
 }  // namespace
 
-scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels) {
+OrientedBox::OrientedBox(const scene::Bounds& world) : corners(world.corners()), empty(world.empty()) {}
+
+OrientedBox::OrientedBox(const scene::Bounds& local, const glm::mat4& model) : empty(local.empty()) {
+    for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = glm::vec3(model * glm::vec4(local.corner(i), 1.0f));
+}
+
+scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels) {
     return footprint(light, caster, receiver, padTexels, nullptr);
 }
 
-scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver,
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver,
                                      float padTexels) {
-    if (caster.empty() || receiver.empty()) return {};
+    if (caster.empty || receiver.empty()) return {};
+    // Only the caster's part within the receiver's own shadow volume can put a layer near the
+    // rays to it (the same volume the other way round): a small receiver, a cell of a floor,
+    // compares with the part of the caster above it, not with its farthest corner anywhere.
     // How far in front of its geometry a receiver's lookup may land, in texels at its depth: the
     // constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and the normal offset,
     // and 2 for the rasterised layers' and the comparison's rounding.
     const float texels = light.shadow.x + 10.0f * light.shadow.y + light.shadow.z + 2.0f;
     const float texelScale = light.shadow.w;
     const glm::vec3 p = glm::vec3(light.positionNear);
-    const auto farthestOf = [&](const auto& depthOf) {
-        float most = std::numeric_limits<float>::lowest();
-        for (const glm::vec3& c : caster.corners()) most = std::max(most, depthOf(c));
-        return most;
-    };
+    const float none = std::numeric_limits<float>::lowest();
     const int type = static_cast<int>(light.colorType.w);
     if (type == gpu::kLightDirectional) {
         // Orthographic depth is linear in distance along d; colouredByTint's test allows 2^-10 of
         // the depth range besides (the half-float alpha), given here 4 times over.
         const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
-        const float limit = farthestOf([&](const glm::vec3& c) { return glm::dot(d, c); }) + texels * texelScale +
-                            (light.directionFar.w - light.positionNear.w) / 256.0f;
+        const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) { return glm::dot(d, c); });
+        if (farthest == none) return {};
+        const float limit = farthest + texels * texelScale + (light.directionFar.w - light.positionNear.w) / 256.0f;
         const Plane behind{-d, limit};
         return footprint(light, caster, receiver, padTexels, &behind);
     }
@@ -171,17 +218,20 @@ scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const scene::B
     const float relative = 1.0f + 2.0f * (texels * texelScale + 1.0f / 256.0f);
     if (type == gpu::kLightPoint) {
         // A cube map's depth is the largest axis distance: the points within a limit form a box.
-        const float limit = relative * farthestOf([&](const glm::vec3& c) {
-                                const glm::vec3 q = glm::abs(c - p);
-                                return std::max(q.x, std::max(q.y, q.z));
-                            });
+        const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
+            const glm::vec3 q = glm::abs(c - p);
+            return std::max(q.x, std::max(q.y, q.z));
+        });
+        if (farthest == none) return {};
+        const float limit = relative * farthest;
         const scene::Bounds within{glm::max(receiver.min, p - limit), glm::min(receiver.max, p + limit)};
         if (glm::any(glm::greaterThan(within.min, within.max))) return {};
         return footprint(light, caster, within, padTexels, nullptr);
     }
     const glm::vec3 axis = glm::normalize(glm::vec3(light.directionFar));
-    const float limit = relative * farthestOf([&](const glm::vec3& c) { return glm::dot(axis, c - p); });
-    const Plane behind{-axis, glm::dot(axis, p) + limit};  // z(x) = axis·(x - p) <= limit
+    const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) { return glm::dot(axis, c - p); });
+    if (farthest == none) return {};
+    const Plane behind{-axis, glm::dot(axis, p) + relative * farthest};  // z(x) = axis·(x - p) <= limit
     return footprint(light, caster, receiver, padTexels, &behind);
 }
 

@@ -22,22 +22,33 @@
 
 namespace penumbra::render {
 
+// A caster's box: its mesh bounds under its model matrix (a rotated pane's is far thinner than
+// its world box), or a world box.
+struct OrientedBox {
+    using Corners = std::array<glm::vec3, 8>;  // in scene::Bounds::corner's order
+    OrientedBox(const scene::Bounds& world);   // NOLINT: a world box is an oriented box
+    OrientedBox(const scene::Bounds& local, const glm::mat4& model);
+    Corners corners;
+    bool empty = true;
+};
+
 // The part of `receiver` (a world box) that light `light` may tint through a translucent caster
-// inside `caster` (a world box): the box of the receiver's points whose ray from the light passes
+// inside `caster`: the box of the receiver's points whose ray from the light passes
 // within `padTexels` texels (of LightData::shadow.w; per unit distance for perspective lights) of
 // the caster's box. Each face of the receiver's box is clipped by the volume's planes, so the box
 // is exact up to the padding and conservative. Empty when the receiver lies off the caster's
 // shadow. (Receivers between the light and the caster count as reached: a lookup may extrapolate
 // the receiver's depth past its own.)
-scene::Bounds tintFootprint(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver, float padTexels);
+scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels);
 
 // The part of tintFootprint's box whose points may lie not clearly behind every layer of the
-// caster as the light sees them: within the caster's farthest light depth plus the distance a
+// caster as the light sees them: within the farthest light depth of the caster's part in the
+// receiver's shadow volume (the caster above it) plus the distance a
 // lookup may land in front of its receiver (the light's bias knobs) and the tint test's tolerance.
 // Elsewhere in the footprint a receiver is behind every layer around it, where CSSM's lookup takes
 // the tint map's product and its fallback loop is never due (ShadowTechnique::behindLayersBuild).
 // A half-space along the light's direction or axis cuts the receiver (a box around a point light).
-scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const scene::Bounds& caster, const scene::Bounds& receiver,
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver,
                                      float padTexels);
 
 // A pixel rectangle [x0, x1) x [y0, y1).
