@@ -105,34 +105,57 @@ TEST(TintReach, ASpotsPyramidWidensWithDistanceAndALightInsideTheCasterReachesEv
     EXPECT_EQ(all.max, ground.max);
 }
 
-// Random casters and receivers under every light type, no padding: each receiver point whose
-// segment to the light crosses the caster lies in the footprint (it is conservative).
-TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f), size(0.05f, 2.0f);
-    const auto randomBox = [&](glm::vec3 centre, float spread) {
+// Random lights, casters and receivers for the conservativeness tests: every light type in
+// turn, casters turned about a random axis every other trial, some receivers flat (as planes are).
+struct RandomTrials {
+    std::mt19937 rng;
+    std::uniform_real_distribution<float> u{-1.0f, 1.0f}, size{0.05f, 2.0f};
+    explicit RandomTrials(unsigned seed) : rng(seed) {}
+    scene::Bounds randomBox(glm::vec3 centre, float spread) {
         const glm::vec3 c = centre + spread * glm::vec3(u(rng), u(rng), u(rng));
-        const glm::vec3 h(size(rng), size(rng) * (u(rng) > 0.6f ? 0.0f : 1.0f), size(rng));  // some flat, as planes are
+        const glm::vec3 h(size(rng), size(rng) * (u(rng) > 0.6f ? 0.0f : 1.0f), size(rng));
         return box(c - h, c + h);
+    }
+    struct Trial {
+        int kind;  // 0 sun, 1 spot, 2 point
+        glm::vec3 lightPos, sunDir;
+        gpu::LightData light;
+        Caster caster;
+        scene::Bounds receiver;
+        // The segment from receiver point p towards the light, and from p away from it.
+        glm::vec3 towards(glm::vec3 p) const { return kind == 0 ? p - 100.0f * sunDir : lightPos; }
+        glm::vec3 beyond(glm::vec3 p) const { return p + 100.0f * (kind == 0 ? sunDir : glm::normalize(p - lightPos)); }
     };
+    Trial trial(int index, float casterHeight, float receiverHeight, float receiverSpread) {
+        Trial t;
+        t.kind = index % 3;
+        t.lightPos = glm::vec3(3 * u(rng), 8.0f + u(rng), 3 * u(rng));
+        t.sunDir = glm::normalize(glm::vec3(u(rng), -1.5f, u(rng)));
+        t.light = t.kind == 0 ? directional(t.sunDir, 0.01f) : perspective(t.kind == 1 ? gpu::kLightSpot : gpu::kLightPoint, t.lightPos, 1e-3f);
+        t.caster = turned(randomBox({0, casterHeight, 0}, 2.0f), index % 2 ? 2.0f * u(rng) : 0.0f, {u(rng), u(rng), 1.0f});
+        t.receiver = randomBox({0, receiverHeight, 0}, receiverSpread);
+        return t;
+    }
+    glm::vec3 pointIn(const scene::Bounds& b) {
+        const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
+        return b.min + t * (b.max - b.min);
+    }
+};
+
+// No padding: each receiver point whose segment to the light crosses the caster lies in the
+// footprint (it is conservative).
+TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
+    RandomTrials random(7);
     int behind = 0, checked = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        const int kind = trial % 3;
-        const glm::vec3 lightPos(3 * u(rng), 8.0f + u(rng), 3 * u(rng));
-        const glm::vec3 sunDir = glm::normalize(glm::vec3(u(rng), -1.5f, u(rng)));
-        const gpu::LightData light = kind == 0 ? directional(sunDir, 0.01f)
-                                               : perspective(kind == 1 ? gpu::kLightSpot : gpu::kLightPoint, lightPos, 1e-3f);
-        const Caster caster = turned(randomBox({0, 4, 0}, 2.0f), trial % 2 ? 2.0f * u(rng) : 0.0f, {u(rng), u(rng), 1.0f});
-        const scene::Bounds receiver = randomBox({0, 1, 0}, 4.0f);
-        const scene::Bounds f = tintFootprint(light, caster.box(), receiver, 0.0f);
+        const RandomTrials::Trial t = random.trial(trial, 4.0f, 1.0f, 4.0f);
+        const scene::Bounds f = tintFootprint(t.light, t.caster.box(), t.receiver, 0.0f);
         for (int i = 0; i < 200; ++i) {
-            const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
-            const glm::vec3 p = receiver.min + t * (receiver.max - receiver.min);
-            const glm::vec3 towards = kind == 0 ? p - 100.0f * sunDir : lightPos;
+            const glm::vec3 p = random.pointIn(t.receiver);
             ++checked;
-            if (!caster.meets(p, towards)) continue;
+            if (!t.caster.meets(p, t.towards(p))) continue;
             ++behind;
-            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << kind;
+            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
         }
     }
     EXPECT_GT(behind, checked / 50);  // the trials do put receivers behind casters
@@ -156,34 +179,20 @@ TEST(TintReach, GroundBelowAFloatingPaneIsBehindItButNotAtTheFootOfABlockStandin
     }
 }
 
-// Random casters and receivers, no padding or bias: each receiver point with a layer of the caster
-// at or behind it on its ray from the light (the ray beyond it meets the caster) is in the
-// not-behind box; there a lookup may find a layer behind the receiver.
+// No padding or bias: each receiver point with a layer of the caster at or behind it on its ray
+// from the light (the ray beyond it meets the caster) is in the not-behind box; there a lookup
+// may find a layer behind the receiver.
 TEST(TintReach, EveryReceiverPointNotBehindTheCasterIsInItsNotBehindFootprint) {
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f), size(0.05f, 2.0f);
-    const auto randomBox = [&](glm::vec3 centre, float spread) {
-        const glm::vec3 c = centre + spread * glm::vec3(u(rng), u(rng), u(rng));
-        const glm::vec3 h(size(rng), size(rng) * (u(rng) > 0.6f ? 0.0f : 1.0f), size(rng));
-        return box(c - h, c + h);
-    };
+    RandomTrials random(11);
     int notBehind = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        const int kind = trial % 3;
-        const glm::vec3 lightPos(3 * u(rng), 8.0f + u(rng), 3 * u(rng));
-        const glm::vec3 sunDir = glm::normalize(glm::vec3(u(rng), -1.5f, u(rng)));
-        const gpu::LightData light = kind == 0 ? directional(sunDir, 0.01f)
-                                               : perspective(kind == 1 ? gpu::kLightSpot : gpu::kLightPoint, lightPos, 1e-3f);
-        const Caster caster = turned(randomBox({0, 3, 0}, 2.0f), trial % 2 ? 2.0f * u(rng) : 0.0f, {u(rng), 1.0f, u(rng)});  // overlapping receivers often
-        const scene::Bounds receiver = randomBox({0, 2, 0}, 2.0f);
-        const scene::Bounds f = tintFootprintNotBehind(light, caster.box(), receiver, 0.0f);
+        const RandomTrials::Trial t = random.trial(trial, 3.0f, 2.0f, 2.0f);  // overlapping often
+        const scene::Bounds f = tintFootprintNotBehind(t.light, t.caster.box(), t.receiver, 0.0f);
         for (int i = 0; i < 200; ++i) {
-            const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
-            const glm::vec3 p = receiver.min + t * (receiver.max - receiver.min);
-            const glm::vec3 beyond = p + 100.0f * (kind == 0 ? sunDir : glm::normalize(p - lightPos));
-            if (!caster.meets(p, beyond)) continue;
+            const glm::vec3 p = random.pointIn(t.receiver);
+            if (!t.caster.meets(p, t.beyond(p))) continue;
             ++notBehind;
-            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << kind;
+            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
         }
     }
     std::printf("%d receiver points not behind their caster\n", notBehind);
