@@ -384,6 +384,7 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
 // transforms every vertex of a draw however little of it the scissor keeps.
 static constexpr std::size_t kSplitTriangles = 4096;
 // Beyond this many rectangles a receiver is split around the footprints' bounding rectangle alone.
+// (The glass scene's floor, split three ways, takes 61: 11 whole, 28 behind layers, 22 untinted.)
 static constexpr std::size_t kMostSplitDraws = 128;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
