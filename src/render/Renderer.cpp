@@ -519,12 +519,11 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         const ReceiverFootprints f = footprintsOf(d.worldBounds, own, casters, block, reach, behindBuild, viewProj, width, height);
         const std::vector<PixelRect>&tinted = f.tinted, &notBehind = f.notBehind;
         TintedPixels& t = split.draws[i];
-        using Shading = TintedPixels::Shading;
         if (tinted.empty()) {
-            t.shading = Shading::Untinted;
+            t.lookup = TintLookup::Untinted;
             continue;
         }
-        if (notBehind.empty() && d.triangles > kSplitTriangles) t.shading = Shading::BehindLayers;
+        if (notBehind.empty() && d.triangles > kSplitTriangles) t.lookup = TintLookup::BehindLayers;
         if (d.triangles > kSplitTriangles) continue;  // whole (or behind layers), unsplit
         t.rects = rectsByLookup(own, notBehind, tinted);
         std::size_t count = 0;
@@ -535,11 +534,12 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         // 91 against 85-87 ms): those pixels keep the whole lookup.
         if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * frameArea)
             t.rects = rectsByLookup(own, tinted, tinted);
-        std::size_t kinds = 0;
-        for (const auto& r : t.rects) kinds += r.empty() ? 0 : 1;
-        const auto only = [&](TintLookup l) { return kinds == 1 && !t.rects[static_cast<int>(l)].empty(); };
-        t.shading = only(TintLookup::Whole) ? Shading::Whole : only(TintLookup::BehindLayers) ? Shading::BehindLayers
-                  : only(TintLookup::Untinted) ? Shading::Untinted : Shading::Split;
+        // All of one kind: the draw is not split after all.
+        const auto kinds = std::count_if(t.rects.begin(), t.rects.end(), [](const auto& r) { return !r.empty(); });
+        if (kinds != 1) continue;
+        for (int l = 0; l < 3; ++l)
+            if (!t.rects[static_cast<std::size_t>(l)].empty()) t.lookup = static_cast<TintLookup>(l);
+        t.rects = {};
     }
     return split;
 }
@@ -548,17 +548,17 @@ Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<
     TintShading t;
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].translucent || !draws[i].visible || !ownObject(draws[i].object)) continue;
-        using Shading = TintedPixels::Shading;
-        const Shading shading = split.draws.empty() ? Shading::Whole : split.draws[i].shading;
-        if (shading == Shading::Whole) ++t.whole;
-        else if (shading == Shading::Untinted) ++t.untinted;
-        else if (shading == Shading::BehindLayers) ++t.behindLayers;
-        else {
+        static const TintedPixels whole;
+        const TintedPixels& pixels = split.draws.empty() ? whole : split.draws[i];
+        if (pixels.split()) {
             ++t.split;
-            const auto& rects = split.draws[i].rects;
-            t.tintedRects += rects[static_cast<int>(TintLookup::Whole)].size();
-            t.untintedRects += rects[static_cast<int>(TintLookup::Untinted)].size();
-            t.behindLayersRects += rects[static_cast<int>(TintLookup::BehindLayers)].size();
+            t.tintedRects += pixels.rects[static_cast<int>(TintLookup::Whole)].size();
+            t.untintedRects += pixels.rects[static_cast<int>(TintLookup::Untinted)].size();
+            t.behindLayersRects += pixels.rects[static_cast<int>(TintLookup::BehindLayers)].size();
+        } else if (pixels.lookup == TintLookup::Whole) {
+            ++t.whole;
+        } else {
+            ++(pixels.lookup == TintLookup::Untinted ? t.untinted : t.behindLayers);
         }
     }
     return t;
@@ -581,21 +581,19 @@ void Renderer::drawSplit(const Draw& d, const TintedPixels& pixels, const TintSp
 
 void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                             const TintSplit* split) {
-    using Shading = TintedPixels::Shading;
     const auto drawn = [&](const Draw& d) {
         return d.translucent == translucent && d.visible && (translucent || ownObject(d.object));
     };
-    const auto shading = [&](std::size_t i) { return translucent || !split || split->draws.empty() ? Shading::Whole : split->draws[i].shading; };
-    // The one lookup of a draw that is not split.
-    const auto lookupOf = [](Shading s) {
-        return s == Shading::Untinted ? TintLookup::Untinted : s == Shading::BehindLayers ? TintLookup::BehindLayers : TintLookup::Whole;
+    const TintedPixels whole;
+    const auto tintOf = [&](std::size_t i) -> const TintedPixels& {
+        return translucent || !split || split->draws.empty() ? whole : split->draws[i];
     };
     for (std::size_t i = 0; i < draws.size(); ++i)  // builds what this pass needs before it is prepared
         if (drawn(draws[i])) {
-            if (shading(i) != Shading::Split) lighting_.of(*draws[i].material, draws[i].translucent, lookupOf(shading(i)));
-            else
-                for (int l = 0; l < 3; ++l)
-                    if (!split->draws[i].rects[static_cast<std::size_t>(l)].empty()) lighting_.of(*draws[i].material, false, static_cast<TintLookup>(l));
+            const TintedPixels& pixels = tintOf(i);
+            if (!pixels.split()) lighting_.of(*draws[i].material, draws[i].translucent, pixels.lookup);
+            for (int l = 0; l < 3; ++l)
+                if (!pixels.rects[static_cast<std::size_t>(l)].empty()) lighting_.of(*draws[i].material, false, static_cast<TintLookup>(l));
         }
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();
@@ -612,15 +610,15 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (!drawn(d)) continue;
-        const gl::Program& program = lighting_.of(*d.material, d.translucent, lookupOf(shading(i)));
         if (!translucent) cullBackFacesOfSolid(d, options_.cullSolidBackFaces, viewProj);  // translucent solids show their far side through the near one
-        if (byTriangle) {
-            gpu_.drawTrianglesSorted(d, program, camera.position);
-        } else if (shading(i) == Shading::Split) {
-            drawSplit(d, split->draws[i], *split);
-        } else {
-            gpu_.draw(d, program);
+        const TintedPixels& pixels = tintOf(i);
+        if (pixels.split()) {
+            drawSplit(d, pixels, *split);
+            continue;
         }
+        const gl::Program& program = lighting_.of(*d.material, d.translucent, pixels.lookup);
+        if (byTriangle) gpu_.drawTrianglesSorted(d, program, camera.position);
+        else gpu_.draw(d, program);
     }
 }
 

@@ -149,9 +149,11 @@ private:
     void ensureTargets(int width, int height);
     // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
     struct TintedPixels {
-        enum class Shading { Whole, Untinted, BehindLayers, Split } shading = Shading::Whole;
-        // Split: the draw's pixels in disjoint rectangles, per the lookup they need (TintLookup's order).
+        TintLookup lookup = TintLookup::Whole;  // of the whole draw, unless it is split
+        // A split draw's pixels in disjoint rectangles, per the lookup they need (TintLookup's
+        // order), of at least two kinds; empty when the draw is not split.
         std::array<std::vector<PixelRect>, 3> rects;
+        bool split() const { return !rects[0].empty() || !rects[1].empty() || !rects[2].empty(); }
     };
     struct TintSplit {
         std::vector<TintedPixels> draws;  // per draw; empty: every draw whole

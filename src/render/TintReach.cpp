@@ -163,6 +163,8 @@ scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, 
 
 // The largest `depthOf` over the part of `caster` inside the shadow volume of `receiver` (the
 // caster's points on rays that pass within the padding of the receiver); lowest() when none.
+// Only that part can put a layer near the rays to the receiver, so a small receiver, a cell of a
+// floor, compares with the part of the caster above it, not with its farthest corner anywhere.
 template <class Depth>
 float farthestAbove(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels, Depth&& depthOf) {
     float most = std::numeric_limits<float>::lowest();
@@ -192,9 +194,6 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& cast
 scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver,
                                      float padTexels) {
     if (caster.empty || receiver.empty()) return {};
-    // Only the caster's part within the receiver's own shadow volume can put a layer near the
-    // rays to it (the same volume the other way round): a small receiver, a cell of a floor,
-    // compares with the part of the caster above it, not with its farthest corner anywhere.
     // How far in front of its geometry a receiver's lookup may land, in texels at its depth: the
     // constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and the normal offset,
     // and 2 for the rasterised layers' and the comparison's rounding.

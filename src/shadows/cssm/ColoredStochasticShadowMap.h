@@ -41,7 +41,7 @@ public:
     void renderMaps(const ShadowFrame& frame) override;
     std::vector<std::string> lookupDefines() const override;
     float tintReachTexels() const override;
-    bool behindLayersBuild() const override { return tintBehindAll() && separateOpaque_; }
+    bool behindLayersBuild() const override { return tintBehindAll(); }  // (tiles need the separate opaque map)
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;
