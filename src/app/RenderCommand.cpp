@@ -25,7 +25,8 @@ namespace penumbra::app {
 
 // How the frame's opaque draws met coloured shadows (render/TintReach.h): drawn with the whole
 // lookup, with none (no translucent caster's shadow reaches them), with the behind-layers build
-// (behind every layer that may reach them), or split on the screen.
+// (behind every layer that may reach them), or split on the screen; and how many translucent draws
+// met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split.
 static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
     return {{"whole_draws", t.whole},
             {"untinted_draws", t.untinted},
@@ -33,7 +34,9 @@ static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
             {"split_draws", t.split},
             {"tinted_rectangles", t.tintedRects},
             {"untinted_rectangles", t.untintedRects},
-            {"behind_layers_rectangles", t.behindLayersRects}};
+            {"behind_layers_rectangles", t.behindLayersRects},
+            {"translucent_untinted_draws", t.translucentUntinted},
+            {"translucent_split_draws", t.translucentSplit}};
 }
 
 using render::PassTimes;

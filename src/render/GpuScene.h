@@ -28,6 +28,10 @@ struct Draw {
     // nearest of its surfaces is a front face. (Through an alpha-tested part's holes its inner
     // faces show.)
     bool solid = false;
+    // The part is flat, or bounds a convex solid of one untextured material (uClosedPart): along a
+    // ray to a light it crosses at most its own face and that solid's other one, the layers a
+    // translucent receiver's lookup divides out (ownLayersFrom, shadow_filtering.glsl).
+    bool ownLayersKnown = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)
     std::size_t triangles = 0;
@@ -64,6 +68,8 @@ private:
         std::vector<std::vector<MeshCluster>> clusters;  // per part; empty for parts drawn whole
         // Per part: it bounds a solid (Mesh::closedParts).
         std::vector<bool> closedParts;
+        // Per part: it is flat, or it bounds a convex solid (Mesh::partIsFlat, partIsConvex).
+        std::vector<bool> flatOrConvexParts;
     };
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;

@@ -26,14 +26,15 @@ std::vector<std::string> lightLayoutDefines(const gpu::LightBlock& block, int su
 // layout, a transparency variant).
 gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std::vector<std::string>& defines);
 
-// What an opaque receiver's lookup must read of the coloured shadows (render/TintReach.h): all of
-// it; none, as no translucent caster's shadow reaches it (RECEIVER_UNTINTED); or only what lies
-// in front of it, as it is behind every layer around it (RECEIVER_BEHIND_LAYERS,
+// What a receiver's lookup must read of the coloured shadows (render/TintReach.h): all of it;
+// none, as no translucent caster's shadow reaches it (RECEIVER_UNTINTED; for a translucent
+// receiver: none but its own layers', ShadowTechnique::ownLayersBuild); or, for an opaque one,
+// only what lies in front of it, as it is behind every layer around it (RECEIVER_BEHIND_LAYERS,
 // ShadowTechnique::behindLayersBuild).
 enum class TintLookup { Whole, Untinted, BehindLayers };
 
 // The lighting program in up to 24 builds: with or without a diffuse texture, for opaque or
-// translucent surfaces, with or without an alpha test, and for opaque ones each TintLookup. MATERIAL_UNTEXTURED never samples the
+// translucent surfaces, with or without an alpha test, and each TintLookup (translucent ones: Whole, Untinted). MATERIAL_UNTEXTURED never samples the
 // texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment whatever the
 // uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
@@ -46,7 +47,7 @@ public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
-    // `tint`: what the pixels it shades need of the coloured shadows (opaque surfaces only).
+    // `tint`: what the pixels it shades need of the coloured shadows (BehindLayers: opaque surfaces only).
     const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole);
     template <class F>
     void forEachBuilt(F&& f) const {

@@ -296,7 +296,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         const TransparencyMode mode = options_.transparency;
         const bool sorted = mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles;
         if (shaded ? sorted : options_.debugTranslucent) {
-            drawSurfaces(draws, true, camera, aspect);
+            drawSurfaces(draws, true, camera, aspect, shaded ? &tintSplit : nullptr);
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
             oit_->render(mode, options_.peelLayers, gpu_, draws,
@@ -388,6 +388,7 @@ static constexpr std::size_t kSplitTriangles = 4096;
 static constexpr std::size_t kMostSplitDraws = 128;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
+static constexpr double kLeastSwitchedTranslucentShare = 0.005;
 
 namespace {
 
@@ -450,7 +451,7 @@ void notBehindCells(const gpu::LightData& light, const OrientedBox& caster, cons
 struct ReceiverFootprints {
     std::vector<PixelRect> tinted, notBehind;
 };
-ReceiverFootprints footprintsOf(const scene::Bounds& receiver, const PixelRect& own, const std::vector<OrientedBox>& casters,
+ReceiverFootprints footprintsOf(const OrientedBox& receiver, const PixelRect& own, const std::vector<OrientedBox>& casters,
                                 const gpu::LightBlock& block, float reach, bool behindBuild, const glm::mat4& viewProj, int width,
                                 int height) {
     ReceiverFootprints f;
@@ -503,20 +504,35 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
     if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
         return split;
     const bool behindBuild = technique_->behindLayersBuild();
+    // Translucent receivers too, where the lookup has a build for those only their own layers
+    // reach, and the pass draws each object whole (not sorted by triangle, not order-independent).
+    const bool translucentReceivers = technique_->ownLayersBuild() && options_.transparency == TransparencyMode::SortedObjects;
     std::vector<OrientedBox> casters;
-    for (const Draw& c : draws)
-        if (c.translucent && c.castsShadow) casters.emplace_back(c.meshBounds, c.model);
+    std::vector<std::size_t> casterDraws;
+    for (std::size_t i = 0; i < draws.size(); ++i)
+        if (draws[i].translucent && draws[i].castsShadow) {
+            casters.emplace_back(draws[i].meshBounds, draws[i].model);
+            casterDraws.push_back(i);
+        }
     split.draws.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
-        if (d.translucent || !d.visible || !ownObject(d.object)) continue;  // another renderer shades it (RegionView)
+        if (!d.visible || !ownObject(d.object)) continue;  // another renderer shades it (RegionView)
+        if (d.translucent && !(translucentReceivers && d.ownLayersKnown)) continue;
         const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
         // A small receiver stays with the whole program: on llvmpipe each switch between the
         // programs costs more than a few thousand pixels' lookups save (scenes/street.json, 190
-        // draws: hard's opaque pass 88 against 67-69 ms when every draw chose).
+        // draws: hard's opaque pass 88 against 67-69 ms when every draw chose). A translucent
+        // receiver's whole lookup costs far more per pixel than an opaque one's.
         const double ownArea = double(own.x1 - own.x0) * double(own.y1 - own.y0), frameArea = double(width) * double(height);
-        if (own.empty() || ownArea < kLeastSwitchedShare * frameArea) continue;
-        const ReceiverFootprints f = footprintsOf(d.worldBounds, own, casters, block, reach, behindBuild, viewProj, width, height);
+        if (own.empty() || ownArea < (d.translucent ? kLeastSwitchedTranslucentShare : kLeastSwitchedShare) * frameArea) continue;
+        // A translucent receiver's own layers are the lookup's to divide out: only the others count.
+        std::vector<OrientedBox> others;
+        if (d.translucent)
+            for (std::size_t c = 0; c < casters.size(); ++c)
+                if (casterDraws[c] != i) others.push_back(casters[c]);
+        const ReceiverFootprints f = footprintsOf(OrientedBox(d.meshBounds, d.model), own, d.translucent ? others : casters, block, reach,
+                                                  behindBuild && !d.translucent, viewProj, width, height);
         const std::vector<PixelRect>&tinted = f.tinted, &notBehind = f.notBehind;
         TintedPixels& t = split.draws[i];
         if (tinted.empty()) {
@@ -547,9 +563,14 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
 Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<Draw>& draws) const {
     TintShading t;
     for (std::size_t i = 0; i < draws.size(); ++i) {
-        if (draws[i].translucent || !draws[i].visible || !ownObject(draws[i].object)) continue;
+        if (!draws[i].visible || !ownObject(draws[i].object)) continue;
         static const TintedPixels whole;
         const TintedPixels& pixels = split.draws.empty() ? whole : split.draws[i];
+        if (draws[i].translucent) {
+            t.translucentSplit += pixels.split() ? 1 : 0;
+            t.translucentUntinted += !pixels.split() && pixels.lookup == TintLookup::Untinted ? 1 : 0;
+            continue;
+        }
         if (pixels.split()) {
             ++t.split;
             t.tintedRects += pixels.rects[static_cast<int>(TintLookup::Whole)].size();
@@ -573,7 +594,7 @@ void Renderer::drawSplit(const Draw& d, const TintedPixels& pixels, const TintSp
     for (int lookup = 0; lookup < 3; ++lookup)
         for (const PixelRect& r : pixels.rects[static_cast<std::size_t>(lookup)]) {
             scissor(r);
-            gpu_.draw(d, lighting_.of(*d.material, false, static_cast<TintLookup>(lookup)));
+            gpu_.draw(d, lighting_.of(*d.material, d.translucent, static_cast<TintLookup>(lookup)));
         }
     if (split.scissored) scissor(split.area);
     else glDisable(GL_SCISSOR_TEST);
@@ -586,14 +607,14 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
     };
     const TintedPixels whole;
     const auto tintOf = [&](std::size_t i) -> const TintedPixels& {
-        return translucent || !split || split->draws.empty() ? whole : split->draws[i];
+        return !split || split->draws.empty() ? whole : split->draws[i];
     };
     for (std::size_t i = 0; i < draws.size(); ++i)  // builds what this pass needs before it is prepared
         if (drawn(draws[i])) {
             const TintedPixels& pixels = tintOf(i);
             if (!pixels.split()) lighting_.of(*draws[i].material, draws[i].translucent, pixels.lookup);
             for (int l = 0; l < 3; ++l)
-                if (!pixels.rects[static_cast<std::size_t>(l)].empty()) lighting_.of(*draws[i].material, false, static_cast<TintLookup>(l));
+                if (!pixels.rects[static_cast<std::size_t>(l)].empty()) lighting_.of(*draws[i].material, translucent, static_cast<TintLookup>(l));
         }
     lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
     gl::PassState state = gl::PassState::depthOnly();

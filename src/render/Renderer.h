@@ -138,6 +138,7 @@ public:
     // (rectangles of each).
     struct TintShading {
         std::size_t whole = 0, untinted = 0, behindLayers = 0, split = 0, tintedRects = 0, untintedRects = 0, behindLayersRects = 0;
+        std::size_t translucentUntinted = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
     };
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }

@@ -60,11 +60,15 @@ void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, 
     }
 }
 
-// The box of `receiver` inside every plane. Every vertex of the (convex) intersection lies on a
-// face of the box, or is `apex`, or lies on `cut` (one of `planes`, not through the apex).
-scene::Bounds insideAll(const scene::Bounds& receiver, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
+// The world box of the part of `oriented` inside every plane. Every vertex of the (convex)
+// intersection lies on a face of the box, or is `apex`, or lies on `cut` (one of `planes`, not
+// through the apex). The apex and the cut are taken within the world box around `oriented`
+// (conservative: a light inside that box but outside a turned receiver's own counts as inside).
+scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
+    scene::Bounds receiver;
+    for (const glm::vec3& c : oriented.corners) receiver.add(c);
     scene::Bounds out;
-    visitFaces(receiver.corners(), planes, [&](const glm::vec3& v) { out.add(v); });
+    visitFaces(oriented.corners, planes, [&](const glm::vec3& v) { out.add(v); });
     if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
         std::all_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.at(*apex) >= 0.0f; }))
         out.add(*apex);
@@ -151,11 +155,11 @@ bool shadowVolume(const gpu::LightData& light, const OrientedBox::Corners& caste
 }
 
 // tintFootprint, with the receiver cut further by `limit` when it is given (a half-space).
-scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels,
+scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
                         const Plane* limit) {
-    if (caster.empty || receiver.empty()) return {};
+    if (caster.empty || receiver.empty) return {};
     ShadowVolume volume;
-    if (!shadowVolume(light, caster.corners, padTexels, volume)) return receiver;  // all of it may be tinted
+    if (!shadowVolume(light, caster.corners, padTexels, volume)) return insideAll(receiver, {}, nullptr);  // all of it may be tinted
     if (limit) volume.planes[static_cast<std::size_t>(volume.count++)] = *limit;
     const std::span<const Plane> planes(volume.planes.data(), static_cast<std::size_t>(volume.count));
     return insideAll(receiver, planes, volume.hasApex ? &volume.apex : nullptr, limit ? &planes.back() : nullptr);
@@ -187,7 +191,7 @@ OrientedBox::OrientedBox(const scene::Bounds& local, const glm::mat4& model) : e
     for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = glm::vec3(model * glm::vec4(local.corner(i), 1.0f));
 }
 
-scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels) {
+scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels) {
     return footprint(light, caster, receiver, padTexels, nullptr);
 }
 

@@ -22,8 +22,8 @@
 
 namespace penumbra::render {
 
-// A caster's box: its mesh bounds under its model matrix (a rotated pane's is far thinner than
-// its world box), or a world box.
+// A caster's or receiver's box: its mesh bounds under its model matrix (a rotated pane's is far
+// thinner than its world box), or a world box.
 struct OrientedBox {
     using Corners = std::array<glm::vec3, 8>;  // in scene::Bounds::corner's order
     OrientedBox(const scene::Bounds& world);   // NOLINT: a world box is an oriented box
@@ -32,14 +32,15 @@ struct OrientedBox {
     bool empty = true;
 };
 
-// The part of `receiver` (a world box) that light `light` may tint through a translucent caster
-// inside `caster`: the box of the receiver's points whose ray from the light passes
+// The part of `receiver` (a world box, or a turned pane's own box) that light `light` may tint
+// through a translucent caster inside `caster`: the world box of the receiver's points whose ray
+// from the light passes
 // within `padTexels` texels (of LightData::shadow.w; per unit distance for perspective lights) of
 // the caster's box. Each face of the receiver's box is clipped by the volume's planes, so the box
 // is exact up to the padding and conservative. Empty when the receiver lies off the caster's
 // shadow. (Receivers between the light and the caster count as reached: a lookup may extrapolate
 // the receiver's depth past its own.)
-scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels);
+scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels);
 
 // The part of tintFootprint's box whose points may lie not clearly behind every layer of the
 // caster as the light sees them: within the farthest light depth of the caster's part in the

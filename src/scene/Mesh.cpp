@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <numeric>
 #include <vector>
@@ -79,5 +80,56 @@ std::vector<bool> Mesh::closedParts() const {
 }
 
 bool Mesh::partIsClosed(std::size_t part) const { return part < parts.size() && closedParts()[part]; }
+
+namespace {
+
+// The part's vertices (each once), its triangles' planes (unit normal, offset; degenerate ones
+// left out) and the tolerance of 1e-4 of its size.
+struct PartPlanes {
+    std::vector<glm::vec3> points;
+    std::vector<glm::vec4> planes;
+    float tolerance = 0.0f;
+};
+PartPlanes planesOf(const Mesh& mesh, const MeshPart& part) {
+    PartPlanes p;
+    std::vector<std::uint32_t> used(mesh.indices.begin() + part.firstIndex, mesh.indices.begin() + part.firstIndex + part.indexCount);
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    Bounds box;
+    for (std::uint32_t v : used) {
+        p.points.push_back(mesh.vertices[v].position);
+        box.add(mesh.vertices[v].position);
+    }
+    p.tolerance = 1e-4f * glm::length(box.extent());
+    for (std::uint32_t i = part.firstIndex; i + 2 < part.firstIndex + part.indexCount; i += 3) {
+        const glm::vec3 a = mesh.vertices[mesh.indices[i]].position, b = mesh.vertices[mesh.indices[i + 1]].position,
+                        c = mesh.vertices[mesh.indices[i + 2]].position;
+        const glm::vec3 n = glm::cross(b - a, c - a);
+        const float length = glm::length(n);
+        if (length <= 1e-12f) continue;
+        p.planes.emplace_back(n / length, -glm::dot(n / length, a));
+    }
+    return p;
+}
+
+}  // namespace
+
+bool Mesh::partIsConvex(std::size_t part, std::size_t mostTriangles) const {
+    if (part >= parts.size() || parts[part].indexCount / 3 > mostTriangles) return false;
+    const PartPlanes p = planesOf(*this, parts[part]);
+    for (const glm::vec4& plane : p.planes)
+        for (const glm::vec3& q : p.points)
+            if (glm::dot(glm::vec3(plane), q) + plane.w > p.tolerance) return false;
+    return !p.planes.empty();
+}
+
+bool Mesh::partIsFlat(std::size_t part) const {
+    if (part >= parts.size()) return false;
+    const PartPlanes p = planesOf(*this, parts[part]);
+    if (p.planes.empty()) return false;
+    for (const glm::vec3& q : p.points)
+        if (std::abs(glm::dot(glm::vec3(p.planes.front()), q) + p.planes.front().w) > p.tolerance) return false;
+    return true;
+}
 
 }  // namespace penumbra::scene

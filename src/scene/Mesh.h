@@ -55,6 +55,13 @@ struct Mesh {
     // O(n log n) in vertices and triangles, once for all parts.
     std::vector<bool> closedParts() const;
     bool partIsClosed(std::size_t part) const;  // closedParts()[part]: for one look
+    // Whether a part's every vertex lies on or behind the plane of each of its triangles (their
+    // counter-clockwise side is the front), to 1e-4 of the part's size: a flat part, or the
+    // surface of a convex solid when the part is also closed. A ray then crosses at most two of
+    // its surfaces. Parts of more than `mostTriangles` triangles are not checked (false):
+    // O(triangles x vertices).
+    bool partIsConvex(std::size_t part, std::size_t mostTriangles = 4096) const;
+    bool partIsFlat(std::size_t part) const;  // every vertex of the part on the plane of its first proper triangle
 };
 
 }  // namespace penumbra::scene

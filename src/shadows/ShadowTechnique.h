@@ -187,6 +187,11 @@ public:
     // fallback loop. The renderer draws with it where render/TintReach.h shows every caster whose
     // shadow may reach a receiver lies in front of it (tintFootprintNotBehind).
     virtual bool behindLayersBuild() const { return false; }
+    // Whether the lookup's translucent build has a cheaper variant for receivers that only their
+    // own layers reach (RECEIVER_UNTINTED with MATERIAL_TRANSLUCENT): the tint with those layers
+    // divided out, without what sorts out other layers. The renderer draws with it where no other
+    // translucent caster's shadow may reach a flat or convex receiver (Draw::ownLayersKnown).
+    virtual bool ownLayersBuild() const { return false; }
     // Binds textures and sets uniforms the lookup needs on the lighting program.
     virtual void bindLookup(const gl::Program& lighting) const = 0;
     virtual std::size_t memoryBytes() const = 0;

@@ -51,5 +51,40 @@ TEST(MeshClosed, EachPartIsJudgedByItsOwnTriangles) {
     EXPECT_FALSE(a.partIsClosed(0));
 }
 
+// Mesh::partIsConvex and partIsFlat: which parts a ray crosses at most twice, so that a
+// translucent receiver's own layers are the ones its lookup divides out (Draw::ownLayersKnown).
+TEST(MeshConvex, BoxesAndSpheresAreConvexAPlaneIsFlat) {
+    EXPECT_TRUE(shapes::box({1.0f, 2.0f, 0.04f}).partIsConvex(0));
+    EXPECT_TRUE(shapes::sphere(0.45f).partIsConvex(0)) << "its poles' degenerate triangles have no plane";
+    EXPECT_TRUE(shapes::plane(2.0f, 2.0f).partIsFlat(0));
+    EXPECT_TRUE(shapes::plane(2.0f, 2.0f).partIsConvex(0)) << "every vertex on its one plane";
+    EXPECT_FALSE(shapes::box({1.0f, 1.0f, 1.0f}).partIsFlat(0));
+    EXPECT_FALSE(shapes::sphere(1.0f).partIsFlat(0));
+    EXPECT_FALSE(shapes::sphere(1.0f, 48, 24).partIsConvex(0, 100)) << "over the triangle limit: not checked";
+    EXPECT_FALSE(shapes::box({1.0f, 1.0f, 1.0f}).partIsConvex(1)) << "no such part";
+}
+
+TEST(MeshConvex, TwoBoxesInOnePartOrAnInwardWindingAreNot) {
+    // Two boxes side by side in one part: a ray along x crosses four faces.
+    Mesh a = shapes::box({1.0f, 1.0f, 1.0f}), b = shapes::box({1.0f, 1.0f, 1.0f});
+    const auto offset = static_cast<std::uint32_t>(a.vertices.size());
+    for (Vertex v : b.vertices) {
+        v.position += glm::vec3(3.0f, 0.0f, 0.0f);
+        a.vertices.push_back(v);
+    }
+    for (std::uint32_t i : b.indices) a.indices.push_back(i + offset);
+    a.parts = {MeshPart{0, static_cast<std::uint32_t>(a.indices.size()), 0}};
+    EXPECT_FALSE(a.partIsConvex(0));
+    EXPECT_FALSE(a.partIsFlat(0));
+
+    Mesh inward = shapes::sphere(1.0f, 16, 8);
+    for (std::size_t t = 0; t + 2 < inward.indices.size(); t += 3) std::swap(inward.indices[t + 1], inward.indices[t + 2]);
+    EXPECT_FALSE(inward.partIsConvex(0)) << "wound inwards: every vertex in front of the faces";
+
+    Mesh dented = shapes::sphere(1.0f, 16, 8);
+    dented.vertices[dented.vertices.size() / 2].position *= 0.8f;  // one vertex pushed in
+    EXPECT_FALSE(dented.partIsConvex(0));
+}
+
 }  // namespace
 }  // namespace penumbra::scene

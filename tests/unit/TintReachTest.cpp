@@ -161,6 +161,38 @@ TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
     EXPECT_GT(behind, checked / 50);  // the trials do put receivers behind casters
 }
 
+// The same with the receiver a turned box too (a translucent pane as a receiver, Renderer's
+// footprintsOf): its points behind the caster lie in the footprint, and the footprint of a turned
+// receiver is never wider than that of its world box.
+TEST(TintReach, EveryPointOfATurnedReceiverBehindTheCasterIsInItsFootprint) {
+    RandomTrials random(11);
+    int behind = 0, checked = 0, tighter = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const RandomTrials::Trial t = random.trial(trial, 4.0f, 1.0f, 4.0f);
+        const Caster receiver = turned(t.receiver, 1.5f * random.u(random.rng), {random.u(random.rng), 1.0f, random.u(random.rng)});
+        const OrientedBox receiverBox = receiver.box();
+        scene::Bounds world;
+        for (const glm::vec3& c : receiverBox.corners) world.add(c);
+        const scene::Bounds f = tintFootprint(t.light, t.caster.box(), receiverBox, 0.0f);
+        const scene::Bounds wide = tintFootprint(t.light, t.caster.box(), world, 0.0f);
+        if (!f.empty()) {
+            ASSERT_FALSE(wide.empty()) << "trial " << trial;
+            ASSERT_TRUE(inside(wide, f.min) && inside(wide, f.max)) << "trial " << trial;
+            tighter += glm::length(f.extent()) < 0.9f * glm::length(wide.extent());
+        }
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 local = random.pointIn(receiver.local);
+            const glm::vec3 p = glm::vec3(receiver.model * glm::vec4(local, 1.0f));
+            ++checked;
+            if (!t.caster.meets(p, t.towards(p))) continue;
+            ++behind;
+            ASSERT_TRUE(inside(f, p, 1e-3f)) << "trial " << trial << " kind " << t.kind;
+        }
+    }
+    EXPECT_GT(behind, checked / 50);
+    EXPECT_GT(tighter, 10) << "a turned receiver's own box cuts its footprint";
+}
+
 TEST(TintReach, GroundBelowAFloatingPaneIsBehindItButNotAtTheFootOfABlockStandingOnIt) {
     const scene::Bounds ground = box({-10, 0, -10}, {10, 0, 10});
     const scene::Bounds pane = box({-1, 2.5f, -1}, {1, 2.52f, 1});

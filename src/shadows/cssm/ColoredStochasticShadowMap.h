@@ -42,6 +42,7 @@ public:
     std::vector<std::string> lookupDefines() const override;
     float tintReachTexels() const override;
     bool behindLayersBuild() const override { return tintBehindAll(); }  // (tiles need the separate opaque map)
+    bool ownLayersBuild() const override { return tintBehindAll(); }
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
     std::vector<DebugView> debugViews() const override;

@@ -408,7 +408,14 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
                           : s.coord.xy * s.resolution;
     vec2 dsdx = dFdx(sTexels), dsdy = dFdy(sTexels);
     if (!s.inside) return vec3(1.0);
-#ifdef RECEIVER_UNTINTED
+#if defined(RECEIVER_UNTINTED) && defined(MATERIAL_TRANSLUCENT)
+    // No translucent layer but the receiver's own reaches its texels, and it is flat or a convex
+    // solid (render/TintReach.h, Draw::ownLayersKnown): the layers at each texel are known, and
+    // the deterministic tint with them divided out (bilinearly, so its rim as the light sees it
+    // is exact too) is what the stochastic counts below estimate. Only those tell layers in
+    // front from layers behind, which this receiver has none of but its own.
+    return compareAt(s, vec2(0.0), 0.0) * bilinearThroughOwnLayers(s);
+#elif defined(RECEIVER_UNTINTED)
     // No translucent layer reaches this receiver's texels (render/TintReach.h): with the opaque
     // casters in the depth map, the coloured term is exactly 1 and only the hard test is left.
     if (kSeparateOpaque) return vec3(compareAt(s, vec2(0.0), 0.0));
