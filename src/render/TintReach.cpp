@@ -1,5 +1,6 @@
 #include "render/TintReach.h"
 
+#include <cstdio>
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -170,11 +171,11 @@ scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, 
 // Only that part can put a layer near the rays to the receiver, so a small receiver, a cell of a
 // floor, compares with the part of the caster above it, not with its farthest corner anywhere.
 template <class Depth>
-float farthestAbove(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver, float padTexels, Depth&& depthOf) {
+float farthestAbove(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels, Depth&& depthOf) {
     float most = std::numeric_limits<float>::lowest();
     const auto keep = [&](const glm::vec3& v) { most = std::max(most, depthOf(v)); };
     ShadowVolume volume;
-    if (!shadowVolume(light, receiver.corners(), padTexels, volume)) {
+    if (!shadowVolume(light, receiver.corners, padTexels, volume)) {
         for (const glm::vec3& c : caster.corners) keep(c);
         return most;
     }
@@ -195,9 +196,9 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& cast
     return footprint(light, caster, receiver, padTexels, nullptr);
 }
 
-scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver,
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                      float padTexels) {
-    if (caster.empty || receiver.empty()) return {};
+    if (caster.empty || receiver.empty) return {};
     // How far in front of its geometry a receiver's lookup may land, in texels at its depth: the
     // constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and the normal offset,
     // and 2 for the rasterised layers' and the comparison's rounding.
@@ -227,7 +228,9 @@ scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const Oriented
         });
         if (farthest == none) return {};
         const float limit = relative * farthest;
-        const scene::Bounds within{glm::max(receiver.min, p - limit), glm::min(receiver.max, p + limit)};
+        scene::Bounds world;  // (a turned receiver: its world box, conservatively)
+        for (const glm::vec3& c : receiver.corners) world.add(c);
+        const scene::Bounds within{glm::max(world.min, p - limit), glm::min(world.max, p + limit)};
         if (glm::any(glm::greaterThan(within.min, within.max))) return {};
         return footprint(light, caster, within, padTexels, nullptr);
     }

@@ -49,7 +49,7 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& cast
 // Elsewhere in the footprint a receiver is behind every layer around it, where CSSM's lookup takes
 // the tint map's product and its fallback loop is never due (ShadowTechnique::behindLayersBuild).
 // A half-space along the light's direction or axis cuts the receiver (a box around a point light).
-scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& receiver,
+scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                      float padTexels);
 
 // A pixel rectangle [x0, x1) x [y0, y1).
