@@ -26,7 +26,8 @@ namespace penumbra::app {
 // How the frame's opaque draws met coloured shadows (render/TintReach.h): drawn with the whole
 // lookup, with none (no translucent caster's shadow reaches them), with the behind-layers build
 // (behind every layer that may reach them), or split on the screen; and how many translucent draws
-// met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split.
+// met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split; and the CPU
+// milliseconds the choice took.
 static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
     return {{"whole_draws", t.whole},
             {"untinted_draws", t.untinted},
@@ -36,7 +37,8 @@ static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
             {"untinted_rectangles", t.untintedRects},
             {"behind_layers_rectangles", t.behindLayersRects},
             {"translucent_untinted_draws", t.translucentUntinted},
-            {"translucent_split_draws", t.translucentSplit}};
+            {"translucent_split_draws", t.translucentSplit},
+            {"cpu_ms", t.cpuMs}};
 }
 
 using render::PassTimes;

@@ -266,11 +266,11 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         glEnable(GL_SCISSOR_TEST);
         glScissor(first, 0, last - first, height);
     }
-    const auto diagT0 = std::chrono::steady_clock::now();
+    const auto splitStart = std::chrono::steady_clock::now();
     TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, width, height, PixelRect{first, 0, last, height});
-    if (getenv("DIAG_SPLIT_MS")) std::fprintf(stderr, "split %.3f ms\n", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - diagT0).count());
     tintSplit.scissored = partial;
     tintShading_ = tally(tintSplit, draws);
+    tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
     hdrFbo_.bind();
     glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;

@@ -135,10 +135,12 @@ public:
     // How the last frame shaded its opaque draws where translucent casters may tint them
     // (RenderOptions::tintOnlyWhereReached, render/TintReach.h): draws with the whole lookup, with
     // the untinted program, with the behind-layers one, and draws split on the screen between them
-    // (rectangles of each).
+    // (rectangles of each); translucent draws with the own-layers build, whole or split; and the
+    // CPU time the choice took.
     struct TintShading {
         std::size_t whole = 0, untinted = 0, behindLayers = 0, split = 0, tintedRects = 0, untintedRects = 0, behindLayersRects = 0;
         std::size_t translucentUntinted = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
+        double cpuMs = 0.0;  // the footprints and rectangles' CPU time (render/TintReach.h)
     };
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }

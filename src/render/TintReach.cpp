@@ -23,18 +23,27 @@ struct Polygon {
     int n = 0;
 };
 
-// Sutherland-Hodgman: the part of convex polygon `poly` inside `plane` (no allocation: this runs
-// per receiver, light, caster and face every frame).
-Polygon clip(const Polygon& poly, const Plane& plane) {
+// Sutherland-Hodgman: `poly` cut to its part inside `plane` (no allocation: this runs per
+// receiver, light, caster, cell and face every frame). Each vertex's distance is taken once, and
+// a polygon wholly inside, the common case, is left as it is. With insideAll's test of the
+// corners first, the footprints' CPU time per frame (stats.json tint_shading cpu_ms, medians of
+// 10 frames) fell from 2.39-2.44 to 1.25-1.57 ms on the glass scene, 0.70 to 0.47 on the default.
+void clip(Polygon& poly, const Plane& plane) {
+    std::array<float, 16> f;
+    bool allInside = true;
+    for (int i = 0; i < poly.n; ++i) {
+        f[static_cast<std::size_t>(i)] = plane.at(poly.v[static_cast<std::size_t>(i)]);
+        allInside = allInside && f[static_cast<std::size_t>(i)] >= 0.0f;
+    }
+    if (allInside) return;
     Polygon out;
     for (int i = 0; i < poly.n; ++i) {
-        const glm::vec3& a = poly.v[static_cast<std::size_t>(i)];
-        const glm::vec3& b = poly.v[static_cast<std::size_t>((i + 1) % poly.n)];
-        const float fa = plane.at(a), fb = plane.at(b);
-        if (fa >= 0.0f) out.v[static_cast<std::size_t>(out.n++)] = a;
-        if ((fa >= 0.0f) != (fb >= 0.0f)) out.v[static_cast<std::size_t>(out.n++)] = a + (b - a) * (fa / (fa - fb));  // signs differ: fa != fb
+        const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>((i + 1) % poly.n);
+        if (f[a] >= 0.0f) out.v[static_cast<std::size_t>(out.n++)] = poly.v[a];
+        if ((f[a] >= 0.0f) != (f[b] >= 0.0f))  // signs differ: f[a] != f[b]
+            out.v[static_cast<std::size_t>(out.n++)] = poly.v[a] + (poly.v[b] - poly.v[a]) * (f[a] / (f[a] - f[b]));
     }
-    return out;
+    poly = out;
 }
 
 // A unit vector across d (render/ may not include shadows/LightSpace.h, whose anyPerpendicular
@@ -55,7 +64,7 @@ void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, 
         for (int c : face) poly.v[static_cast<std::size_t>(poly.n++)] = box[static_cast<std::size_t>(c)];
         for (const Plane& plane : planes) {
             if (poly.n == 0) break;
-            poly = clip(poly, plane);
+            clip(poly, plane);
         }
         for (int i = 0; i < poly.n; ++i) visit(poly.v[static_cast<std::size_t>(i)]);
     }
@@ -68,6 +77,15 @@ void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, 
 scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> planes, const glm::vec3* apex, const Plane* cut = nullptr) {
     scene::Bounds receiver;
     for (const glm::vec3& c : oriented.corners) receiver.add(c);
+    // Wholly outside one plane: nothing; wholly inside every plane: all of it (the box is convex).
+    bool inside = true;
+    for (const Plane& plane : planes) {
+        int in = 0;
+        for (const glm::vec3& c : oriented.corners) in += plane.at(c) >= 0.0f ? 1 : 0;
+        if (in == 0) return {};
+        inside = inside && in == 8;
+    }
+    if (inside) return receiver;
     scene::Bounds out;
     visitFaces(oriented.corners, planes, [&](const glm::vec3& v) { out.add(v); });
     if (apex && glm::all(glm::greaterThanEqual(*apex, receiver.min)) && glm::all(glm::lessThanEqual(*apex, receiver.max)) &&
@@ -85,12 +103,12 @@ scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> plan
         for (int a = 0; a < 3 && poly.n > 0; ++a) {
             glm::vec3 axis(0.0f);
             axis[a] = 1.0f;
-            poly = clip(poly, Plane{axis, -receiver.min[a]});
-            if (poly.n > 0) poly = clip(poly, Plane{-axis, receiver.max[a]});
+            clip(poly, Plane{axis, -receiver.min[a]});
+            if (poly.n > 0) clip(poly, Plane{-axis, receiver.max[a]});
         }
         for (const Plane& plane : planes) {
             if (poly.n == 0) break;
-            if (&plane != cut) poly = clip(poly, plane);
+            if (&plane != cut) clip(poly, plane);
         }
         for (int i = 0; i < poly.n; ++i) out.add(poly.v[static_cast<std::size_t>(i)]);
     }
