@@ -8,8 +8,8 @@
 #include "util/Digest.h"
 #include "util/Log.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::render {

@@ -1,6 +1,5 @@
 #include "render/TintReach.h"
 
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
 #include <span>
