@@ -35,8 +35,9 @@ enum class TintLookup { Whole, Untinted, BehindLayers };
 
 // The lighting program in up to 24 builds: with or without a diffuse texture, for opaque or
 // translucent surfaces, with or without an alpha test, and each TintLookup (translucent surfaces:
-// Whole and Untinted). MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment whatever the
-// uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
+// Whole and Untinted). MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
+// under `uHasTexture != 0` for every fragment whatever the uniform says (measured, default scene,
+// none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
 // layers (CSSM's nearest-layer statistics). MATERIAL_NO_ALPHA_TEST (materials without a cutoff)
 // leaves the alpha test's `discard` out, as DepthCasterProgram does for casters. The
