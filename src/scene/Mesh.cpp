@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace penumbra::scene {
@@ -83,8 +84,18 @@ bool Mesh::partIsClosed(std::size_t part) const { return part < parts.size() && 
 
 namespace {
 
-// The part's vertices (each once), its triangles' planes (unit normal, offset; degenerate ones
-// left out) and the tolerance of 1e-4 of its size.
+constexpr float kPlaneTolerance = 1e-4f;  // of a part's size
+
+// A triangle's plane (unit normal, offset), none for a degenerate one.
+std::optional<glm::vec4> planeOf(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float length = glm::length(n);
+    if (length <= 1e-12f) return std::nullopt;
+    return glm::vec4(n / length, -glm::dot(n / length, a));
+}
+
+// The part's vertices (each once), its triangles' planes (degenerate ones left out) and the
+// tolerance of kPlaneTolerance of its size.
 struct PartPlanes {
     std::vector<glm::vec3> points;
     std::vector<glm::vec4> planes;
@@ -100,15 +111,11 @@ PartPlanes planesOf(const Mesh& mesh, const MeshPart& part) {
         p.points.push_back(mesh.vertices[v].position);
         box.add(mesh.vertices[v].position);
     }
-    p.tolerance = 1e-4f * glm::length(box.extent());
-    for (std::uint32_t i = part.firstIndex; i + 2 < part.firstIndex + part.indexCount; i += 3) {
-        const glm::vec3 a = mesh.vertices[mesh.indices[i]].position, b = mesh.vertices[mesh.indices[i + 1]].position,
-                        c = mesh.vertices[mesh.indices[i + 2]].position;
-        const glm::vec3 n = glm::cross(b - a, c - a);
-        const float length = glm::length(n);
-        if (length <= 1e-12f) continue;
-        p.planes.emplace_back(n / length, -glm::dot(n / length, a));
-    }
+    p.tolerance = kPlaneTolerance * glm::length(box.extent());
+    for (std::uint32_t i = part.firstIndex; i + 2 < part.firstIndex + part.indexCount; i += 3)
+        if (const auto plane = planeOf(mesh.vertices[mesh.indices[i]].position, mesh.vertices[mesh.indices[i + 1]].position,
+                                       mesh.vertices[mesh.indices[i + 2]].position))
+            p.planes.push_back(*plane);
     return p;
 }
 
@@ -123,12 +130,21 @@ bool Mesh::partIsConvex(std::size_t part, std::size_t mostTriangles) const {
     return !p.planes.empty();
 }
 
+// Straight over the indices, stopping at the first vertex off the plane: no sorted copy of the
+// indices and no plane per triangle, which only partIsConvex needs.
 bool Mesh::partIsFlat(std::size_t part) const {
     if (part >= parts.size()) return false;
-    const PartPlanes p = planesOf(*this, parts[part]);
-    if (p.planes.empty()) return false;
-    for (const glm::vec3& q : p.points)
-        if (std::abs(glm::dot(glm::vec3(p.planes.front()), q) + p.planes.front().w) > p.tolerance) return false;
+    const MeshPart& mp = parts[part];
+    const auto at = [&](std::uint32_t i) { return vertices[indices[i]].position; };
+    std::optional<glm::vec4> plane;
+    for (std::uint32_t i = mp.firstIndex; i + 2 < mp.firstIndex + mp.indexCount && !plane; i += 3)
+        plane = planeOf(at(i), at(i + 1), at(i + 2));
+    if (!plane) return false;
+    Bounds box;
+    for (std::uint32_t i = mp.firstIndex; i < mp.firstIndex + mp.indexCount; ++i) box.add(at(i));
+    const float tolerance = kPlaneTolerance * glm::length(box.extent());
+    for (std::uint32_t i = mp.firstIndex; i < mp.firstIndex + mp.indexCount; ++i)
+        if (std::abs(glm::dot(glm::vec3(*plane), at(i)) + plane->w) > tolerance) return false;
     return true;
 }
 
