@@ -94,6 +94,7 @@ std::optional<bench::Quality> measureQuality(const BenchJob& job, const std::vec
     if (scene.lights.empty()) return std::nullopt;
     const int w = job.settings.width, h = job.settings.height;
     reference::Comparison cmp(scene, w, h, 0.0f);
+    cmp.setRenderOptions(job.settings.render);
     cmp.traceReference(job.samples, isatty(2));
     bench::Quality q;
     q.sceneName = results.front().sceneName;

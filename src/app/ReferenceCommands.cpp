@@ -75,6 +75,7 @@ int runCompare(const ReportJob& job) {
     if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
     Session s = open(job);
     Comparison cmp(s.scene, job.width, job.height, job.time, job.translucentReceivers);
+    cmp.setRenderOptions(job.render);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());
     util::writePng(job.outDir / "reference.png", job.width, job.height, referenceImage);

@@ -37,6 +37,7 @@ static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
             {"untinted_rectangles", t.untintedRects},
             {"behind_layers_rectangles", t.behindLayersRects},
             {"translucent_untinted_draws", t.translucentUntinted},
+            {"translucent_behind_layers_draws", t.translucentBehindLayers},
             {"translucent_split_draws", t.translucentSplit},
             {"cpu_ms", t.cpuMs}};
 }

@@ -74,13 +74,14 @@ void Comparison::traceReference(int samples, bool showProgress, const Progress& 
 
 namespace {
 
-render::RenderOptions optionsFor(const std::string& technique, int shadowResolution,
+render::RenderOptions optionsFor(render::RenderOptions options, const std::string& technique, int shadowResolution,
                                  const shadows::ParameterValues& parameters, bool translucentReceivers) {
-    render::RenderOptions options;
     options.technique = technique;
     options.debugTranslucent = translucentReceivers;
     options.shadowResolution = shadowResolution;
     options.parameters = parameters;
+    options.output = render::OutputMode::Shaded;  // each capture sets its own
+    options.debugOverlay = false;                 // (the maps drawn over the frame are no surface)
     return options;
 }
 
@@ -91,7 +92,7 @@ TechniqueScore Comparison::evaluate(const std::string& technique, int shadowReso
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;
-    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters, translucentReceivers_));
+    render::Renderer renderer(scene_, optionsFor(base_, technique, shadowResolution, parameters, translucentReceivers_));
 
     // Cost of the technique's real frames (shaded, translucency and fog included).
     render::OffscreenTarget target(width_, height_);
@@ -145,7 +146,7 @@ constexpr float kCrawlThreshold = 8.0f / 255.0f;
 
 MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowResolution, int frames,
                                        float pixelsPerFrame, const shadows::ParameterValues& parameters) {
-    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters, translucentReceivers_));
+    render::Renderer renderer(scene_, optionsFor(base_, technique, shadowResolution, parameters, translucentReceivers_));
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const scene::Camera& start = scene_.camera;
     const glm::vec3 forward = glm::normalize(start.target - start.position);

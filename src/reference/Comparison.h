@@ -52,6 +52,12 @@ public:
     void traceReference(int samples, bool showProgress, const Progress& onProgress = {});
     double referenceSeconds() const { return referenceSeconds_; }
 
+    // The options every evaluation below renders with, but for its own technique, shadow
+    // resolution and parameters (default: RenderOptions' defaults): a command's shared flags
+    // (--tint-everywhere, --transparency, --redraw-shadow-maps, ...), so that the scores are of
+    // the pixels those flags draw.
+    void setRenderOptions(const render::RenderOptions& base) { base_ = base; }
+
     // Renders `technique`'s visibility for every light and scores it against the reference;
     // `timedFrames` full frames (after one warm-up; 0: none) measure its GPU cost.
     TechniqueScore evaluate(const std::string& technique, int shadowResolution, int timedFrames,
@@ -81,6 +87,7 @@ private:
     int width_, height_;
     float time_;
     bool translucentReceivers_;
+    render::RenderOptions base_;
     SurfacePoints points_;
     std::vector<glm::vec3> ambient_;
     std::vector<std::vector<glm::vec3>> contribution_;  // per light

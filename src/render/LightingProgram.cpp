@@ -35,7 +35,6 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
 
 const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    if (translucent && tint == TintLookup::BehindLayers) tint = TintLookup::Whole;  // (opaque receivers only)
     gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0) + 8 * static_cast<int>(tint)];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;

@@ -28,14 +28,14 @@ gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std:
 
 // What a receiver's lookup must read of the coloured shadows (render/TintReach.h): all of it;
 // none, as no translucent caster's shadow reaches it (RECEIVER_UNTINTED; for a translucent
-// receiver: none but its own layers', ShadowTechnique::ownLayersBuild); or, for an opaque one,
-// only what lies in front of it, as it is behind every layer around it (RECEIVER_BEHIND_LAYERS,
-// ShadowTechnique::behindLayersBuild).
+// receiver: none but its own layers', as every other layer lies behind it,
+// ShadowTechnique::ownLayersBuild); or only what lies in front of it, as it is behind every layer
+// around it (RECEIVER_BEHIND_LAYERS, ShadowTechnique::behindLayersBuild; for a translucent
+// receiver, behind every other layer: ownLayersBuild).
 enum class TintLookup { Whole, Untinted, BehindLayers };
 
 // The lighting program in up to 24 builds: with or without a diffuse texture, for opaque or
-// translucent surfaces, with or without an alpha test, and each TintLookup (translucent surfaces:
-// Whole and Untinted). MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
+// translucent surfaces, with or without an alpha test, and each TintLookup. MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
 // under `uHasTexture != 0` for every fragment whatever the uniform says (measured, default scene,
 // none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
@@ -48,7 +48,7 @@ public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
-    // `tint`: what the pixels it shades need of the coloured shadows (BehindLayers: opaque surfaces only).
+    // `tint`: what the pixels it shades need of the coloured shadows.
     const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole);
     template <class F>
     void forEachBuilt(F&& f) const {

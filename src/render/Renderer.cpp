@@ -299,7 +299,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         const TransparencyMode mode = options_.transparency;
         const bool sorted = mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles;
         if (shaded ? sorted : options_.debugTranslucent) {
-            drawSurfaces(draws, true, camera, aspect, shaded ? &tintSplit : nullptr);
+            drawSurfaces(draws, true, camera, aspect, &tintSplit);
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
             oit_->render(mode, options_.peelLayers, gpu_, draws,
@@ -398,20 +398,26 @@ namespace {
 // The grid the not-behind rectangles are grown to (pixels).
 constexpr int kSnap = 32;
 
-// `own` in disjoint rectangles per lookup: the pixels some not-behind footprint may cover take the
-// whole lookup, the rest of the footprints' pixels the behind-layers build, the others none.
-std::array<std::vector<PixelRect>, 3> rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind,
-                                                    const std::vector<PixelRect>& tinted) {
-    // The not-behind rectangles come per cell of a footprint, many and overlapping: grown to a
-    // grid of kSnap pixels, they share edges and merge into few runs.
-    std::vector<PixelRect> snapped;
-    for (const PixelRect& r : notBehind) {
+// `rects` grown to a grid of kSnap pixels, within `own`, without those another one contains: the
+// footprints' cells come many and overlapping, and grown so they share edges and merge into few runs.
+std::vector<PixelRect> snapped(const PixelRect& own, const std::vector<PixelRect>& rects) {
+    std::vector<PixelRect> grown;
+    for (const PixelRect& r : rects) {
         const PixelRect g = PixelRect{r.x0 / kSnap * kSnap, r.y0 / kSnap * kSnap, (r.x1 + kSnap - 1) / kSnap * kSnap,
                                       (r.y1 + kSnap - 1) / kSnap * kSnap}.intersected(own);
-        if (std::none_of(snapped.begin(), snapped.end(), [&](const PixelRect& s) { return s.contains(g); })) snapped.push_back(g);
+        if (std::none_of(grown.begin(), grown.end(), [&](const PixelRect& s) { return s.contains(g); })) grown.push_back(g);
     }
-    std::array<std::vector<PixelRect>, 3> rects;
-    RectPartition first = partition(own, snapped);
+    return grown;
+}
+
+using RectsByLookup = std::array<std::vector<PixelRect>, 3>;  // TintLookup's order
+
+// An opaque receiver's `own` in disjoint rectangles per lookup: the pixels some not-behind
+// footprint may cover take the whole lookup, the rest of the footprints' pixels the behind-layers
+// build, the others none.
+RectsByLookup rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind, const std::vector<PixelRect>& tinted) {
+    RectsByLookup rects;
+    RectPartition first = partition(own, snapped(own, notBehind));
     rects[static_cast<int>(TintLookup::Whole)] = std::move(first.inside);
     for (const PixelRect& r : first.outside) {
         RectPartition second = partition(r, tinted);
@@ -423,22 +429,45 @@ std::array<std::vector<PixelRect>, 3> rectsByLookup(const PixelRect& own, const 
     return rects;
 }
 
-// The not-behind boxes (tintFootprintNotBehind) of the parts of `box` under `model` (a world box
-// under the identity, or a turned receiver's own): the box's own when it is behind or at the
-// finest level, else those of its quarters across its two longest sides (in the world). Where a
-// receiver is not behind a caster is a strip at the caster's foot or across it, whose box may
-// span the whole footprint; halving around it keeps the rest behind (8 x 8 cells at most; a
-// translucent receiver's own box, 4 x 4: glass scene, cssm2, translucent pass 45.4 / 45.5 ms with
-// 4 x 4 against 49.4 / 45.3 with 8 x 8 and 49.7 / 50.0 with 2 x 2, the cells' CPU time per frame
-// 1.7 ms against 2.2 and 1.4).
-constexpr int kFinestLevel = 3, kFinestTranslucentLevel = 2;
-template <class Emit>
-void notBehindCells(const gpu::LightData& light, const OrientedBox& caster, const scene::Bounds& box, const glm::mat4& model, float pad,
-                    int level, int finest, Emit&& emit) {
-    const scene::Bounds front = tintFootprintNotBehind(light, caster, OrientedBox(box, model), pad);
-    if (front.empty()) return;
+// A translucent receiver's: pixels where every other layer lies behind it (off every not-in-front
+// footprint) take the build for its own layers alone (Untinted), the rest where every other layer
+// lies in front of it (off every not-behind footprint) the build that divides its own layers out
+// of their product (BehindLayers), and pixels that may have layers on both sides the whole lookup.
+RectsByLookup translucentRectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind,
+                                       const std::vector<PixelRect>& notInFront) {
+    RectsByLookup rects;
+    RectPartition first = partition(own, snapped(own, notInFront));
+    rects[static_cast<int>(TintLookup::Untinted)] = std::move(first.outside);
+    const std::vector<PixelRect> behindNot = snapped(own, notBehind);
+    for (const PixelRect& r : first.inside) {
+        RectPartition second = partition(r, behindNot);
+        auto& whole = rects[static_cast<int>(TintLookup::Whole)];
+        auto& behind = rects[static_cast<int>(TintLookup::BehindLayers)];
+        whole.insert(whole.end(), second.inside.begin(), second.inside.end());
+        behind.insert(behind.end(), second.outside.begin(), second.outside.end());
+    }
+    return rects;
+}
+
+// The boxes `cut` gives (tintFootprintNotBehind, tintFootprintNotInFront) for the parts of `box`
+// under `model` (a world box under the identity, or a turned receiver's own): the box's own when
+// the cut leaves nothing of it or at the finest level, else those of its quarters across its two
+// longest sides (in the world). Where a receiver is not behind a caster is a strip at the caster's
+// foot or across it, whose box may span the whole footprint; halving around it keeps the rest
+// behind (8 x 8 cells at most). A translucent receiver's cells are of its own box, 8 x 8 too: a
+// cell's depth span along the light (a pane turned from it) sets how near another pane may come
+// before the cell counts as beside it. Glass scene, cssm2: the green pane's pixels that keep the
+// whole lookup 11,008 with 4 x 4 cells, 3,008 with 8 x 8 (4,928 with 8 x 8 only for the
+// not-in-front cells); the cells' CPU time per frame 1.6-2.9 ms against 1.3-1.6 before the
+// not-in-front cells were added (stats.json tint_shading cpu_ms).
+constexpr int kFinestLevel = 3, kFinestTranslucentLevel = 3;
+// `cut`: the receiver part's box (an OrientedBox) to the box it keeps.
+template <class Cut, class Emit>
+void cellsOf(const Cut& cut, const scene::Bounds& box, const glm::mat4& model, int level, int finest, Emit&& emit) {
+    const scene::Bounds part = cut(OrientedBox(box, model));
+    if (part.empty()) return;
     if (level == finest) {
-        emit(front);
+        emit(part);
         return;
     }
     glm::vec3 size = box.max - box.min;
@@ -450,15 +479,16 @@ void notBehindCells(const gpu::LightData& light, const OrientedBox& caster, cons
         const float midA = 0.5f * (box.min[a] + box.max[a]), midB = 0.5f * (box.min[b] + box.max[b]);
         (q & 1 ? c.min[a] : c.max[a]) = midA;
         (q & 2 ? c.min[b] : c.max[b]) = midB;
-        notBehindCells(light, caster, c, model, pad, level + 1, finest, emit);
+        cellsOf(cut, c, model, level + 1, finest, emit);
     }
 }
 
 // The screen rectangles of a receiver's footprints (tinted), and of their parts that may be not
-// behind the caster (notBehind; the footprints themselves without a behind-layers build), within
-// `own`, over every shadowed light and translucent caster.
+// behind the caster (notBehind; the footprints themselves without a behind-layers build) and, for
+// a translucent receiver, not in front of it (notInFront), within `own`, over every shadowed light
+// and translucent caster.
 struct ReceiverFootprints {
-    std::vector<PixelRect> tinted, notBehind;
+    std::vector<PixelRect> tinted, notBehind, notInFront;
 };
 // A translucent receiver's cells are its own box's (a thin pane's world box holds mostly air); an
 // opaque one's those of its footprint's world box.
@@ -481,12 +511,21 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
                 f.notBehind.push_back(r);
                 continue;
             }
-            const auto emit = [&](const scene::Bounds& front) {
-                const PixelRect cell = screenRect(front, viewProj, width, height).intersected(own);
-                if (!cell.empty()) f.notBehind.push_back(cell);
+            const auto into = [&](std::vector<PixelRect>& rects) {
+                return [&](const scene::Bounds& part) {
+                    const PixelRect cell = screenRect(part, viewProj, width, height).intersected(own);
+                    if (!cell.empty()) rects.push_back(cell);
+                };
             };
-            if (d.translucent) notBehindCells(light, caster, d.meshBounds, d.model, pad, 0, kFinestTranslucentLevel, emit);
-            else notBehindCells(light, caster, footprint, glm::mat4(1.0f), pad, 0, kFinestLevel, emit);
+            if (d.translucent) {
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, pad, SideTolerance::Surface); },
+                        d.meshBounds, d.model, 0, kFinestTranslucentLevel, into(f.notBehind));
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotInFront(light, caster, cell, pad, SideTolerance::Surface); },
+                        d.meshBounds, d.model, 0, kFinestTranslucentLevel, into(f.notInFront));
+            } else {
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, pad); }, footprint, glm::mat4(1.0f), 0,
+                        kFinestLevel, into(f.notBehind));
+            }
         }
     }
     return f;
@@ -515,8 +554,11 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
     split.area = area;
     const float reach = technique_->tintReachTexels();
     // Without translucent casters every program reads no tint already (SCENE_TRANSLUCENT_CASTERS 0).
-    if (!options_.tintOnlyWhereReached || reach < 0.0f || options_.output != OutputMode::Shaded || !anyTranslucentCaster(draws))
-        return split;
+    // The visibility output is split as the shaded picture is, so that `compare` scores the pixels
+    // a user sees (translucent receivers' builds differ from the whole lookup at rims); the other
+    // outputs read no shadow.
+    const bool readsShadows = options_.output == OutputMode::Shaded || options_.output == OutputMode::Visibility;
+    if (!options_.tintOnlyWhereReached || reach < 0.0f || !readsShadows || !anyTranslucentCaster(draws)) return split;
     const bool behindBuild = technique_->behindLayersBuild();
     // Translucent receivers too, where the lookup has a build for those only their own layers
     // reach, and the pass draws each object whole (not sorted by triangle, not order-independent).
@@ -547,26 +589,41 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
                 if (casterDraws[c] != i) others.push_back(casters[c]);
         const ReceiverFootprints f =
             footprintsOf(d, own, d.translucent ? others : casters, block, reach, behindBuild || d.translucent, viewProj, width, height);
-        // A translucent receiver behind every other layer finds its own layers farthest at each
-        // texel, so the own-layers build divides them out of a product of layers in front: only
-        // where another layer may lie beside or behind it does it need the whole lookup.
-        const std::vector<PixelRect>&tinted = d.translucent ? f.notBehind : f.tinted, &notBehind = f.notBehind;
         TintedPixels& t = split.draws[i];
-        if (tinted.empty()) {
-            t.lookup = TintLookup::Untinted;
-            continue;
+        const auto rectCount = [&] {
+            std::size_t count = 0;
+            for (const auto& r : t.rects) count += r.size();
+            return count;
+        };
+        if (d.translucent) {
+            // Every other layer behind it, or none there: the layers in front of it are its own
+            // (Untinted). Every other layer in front of it: they are in the tint's product with its
+            // own, which the lookup divides out (BehindLayers). Layers on both sides: the whole.
+            if (f.notInFront.empty()) {
+                t.lookup = TintLookup::Untinted;
+                continue;
+            }
+            if (d.triangles > kSplitTriangles) {
+                if (f.notBehind.empty()) t.lookup = TintLookup::BehindLayers;
+                continue;
+            }
+            t.rects = translucentRectsByLookup(own, f.notBehind, f.notInFront);
+            if (rectCount() > kMostSplitDraws) t.rects = translucentRectsByLookup(own, bounding(f.notBehind), bounding(f.notInFront));
+        } else {
+            if (f.tinted.empty()) {
+                t.lookup = TintLookup::Untinted;
+                continue;
+            }
+            if (f.notBehind.empty() && d.triangles > kSplitTriangles) t.lookup = TintLookup::BehindLayers;
+            if (d.triangles > kSplitTriangles) continue;  // whole (or behind layers), unsplit
+            t.rects = rectsByLookup(own, f.notBehind, f.tinted);
+            if (rectCount() > kMostSplitDraws) t.rects = rectsByLookup(own, bounding(f.notBehind), bounding(f.tinted));
+            // Behind-layers rectangles covering little of the frame are not worth their draws and
+            // program switches (scenes/street.json: 21 receivers split three ways, cssm2's opaque pass
+            // 91 against 85-87 ms): those pixels keep the whole lookup.
+            if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * frameArea)
+                t.rects = rectsByLookup(own, f.tinted, f.tinted);
         }
-        if (notBehind.empty() && d.triangles > kSplitTriangles) t.lookup = TintLookup::BehindLayers;
-        if (d.triangles > kSplitTriangles) continue;  // whole (or behind layers), unsplit
-        t.rects = rectsByLookup(own, notBehind, tinted);
-        std::size_t count = 0;
-        for (const auto& r : t.rects) count += r.size();
-        if (count > kMostSplitDraws) t.rects = rectsByLookup(own, bounding(notBehind), bounding(tinted));
-        // Behind-layers rectangles covering little of the frame are not worth their draws and
-        // program switches (scenes/street.json: 21 receivers split three ways, cssm2's opaque pass
-        // 91 against 85-87 ms): those pixels keep the whole lookup.
-        if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * frameArea)
-            t.rects = rectsByLookup(own, tinted, tinted);
         // All of one kind: the draw is not split after all.
         const auto kinds = std::count_if(t.rects.begin(), t.rects.end(), [](const auto& r) { return !r.empty(); });
         if (kinds != 1) continue;
@@ -586,6 +643,7 @@ Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<
         if (draws[i].translucent) {
             t.translucentSplit += pixels.split() ? 1 : 0;
             t.translucentUntinted += !pixels.split() && pixels.lookup == TintLookup::Untinted ? 1 : 0;
+            t.translucentBehindLayers += !pixels.split() && pixels.lookup == TintLookup::BehindLayers ? 1 : 0;
             continue;
         }
         if (pixels.split()) {

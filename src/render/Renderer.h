@@ -139,7 +139,7 @@ public:
     // CPU time the choice took.
     struct TintShading {
         std::size_t whole = 0, untinted = 0, behindLayers = 0, split = 0, tintedRects = 0, untintedRects = 0, behindLayersRects = 0;
-        std::size_t translucentUntinted = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
+        std::size_t translucentUntinted = 0, translucentBehindLayers = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
         double cpuMs = 0.0;  // the footprints and rectangles' CPU time (render/TintReach.h)
     };
     const TintShading& tintShading() const { return tintShading_; }

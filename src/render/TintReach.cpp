@@ -69,6 +69,26 @@ void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, 
     }
 }
 
+// The planes of a hexahedron's faces (corners in Bounds::corner's order), facing in and moved out
+// by a hair of its size for rounding; a face without area (a flat box's sides) gives none.
+int facePlanes(const OrientedBox::Corners& box, std::array<Plane, 6>& out) {
+    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+    glm::vec3 centre(0.0f);
+    for (const glm::vec3& c : box) centre += c * 0.125f;
+    const float slack = 1e-4f * glm::length(box[7] - box[0]) + 1e-6f;
+    int count = 0;
+    for (const auto& face : kFaces) {
+        const glm::vec3 a = box[static_cast<std::size_t>(face[0])];
+        glm::vec3 n = glm::cross(box[static_cast<std::size_t>(face[1])] - a, box[static_cast<std::size_t>(face[3])] - a);
+        const float length = glm::length(n);
+        if (length < 1e-12f) continue;
+        n /= length;
+        if (glm::dot(n, centre - a) < 0.0f) n = -n;
+        out[static_cast<std::size_t>(count++)] = Plane{n, slack - glm::dot(n, a)};
+    }
+    return count;
+}
+
 // The world box of the part of `oriented` inside every plane. Every vertex of the (convex)
 // intersection lies on a face of the box, or is `apex`, or lies on `cut` (one of `planes`, not
 // through the apex). The apex and the cut are taken within the world box around `oriented`
@@ -105,6 +125,11 @@ scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> plan
             clip(poly, Plane{axis, -receiver.min[a]});
             if (poly.n > 0) clip(poly, Plane{-axis, receiver.max[a]});
         }
+        // A turned receiver's own faces too: its world box holds mostly air (a thin pane), which
+        // the cut's cross-section would otherwise span.
+        std::array<Plane, 6> faces;
+        const int faceCount = facePlanes(oriented.corners, faces);
+        for (int f = 0; f < faceCount && poly.n > 0; ++f) clip(poly, faces[static_cast<std::size_t>(f)]);
         for (const Plane& plane : planes) {
             if (poly.n == 0) break;
             if (&plane != cut) clip(poly, plane);
@@ -183,22 +208,88 @@ scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, 
     return insideAll(receiver, planes, volume.hasApex ? &volume.apex : nullptr, limit ? &planes.back() : nullptr);
 }
 
-// The largest `depthOf` over the part of `caster` inside the shadow volume of `receiver` (the
-// caster's points on rays that pass within the padding of the receiver); lowest() when none.
-// Only that part can put a layer near the rays to the receiver, so a small receiver, a cell of a
-// floor, compares with the part of the caster above it, not with its farthest corner anywhere.
+// The least and largest `depthOf` over the part of `caster` inside the shadow volume of
+// `receiver` (the caster's points on rays that pass within the padding of the receiver); empty
+// (least > largest) when there is none. Only that part can put a layer near the rays to the
+// receiver, so a small receiver, a cell of a floor, compares with the part of the caster above
+// it, not with its farthest corner anywhere.
+struct DepthRange {
+    float least = std::numeric_limits<float>::max(), most = std::numeric_limits<float>::lowest();
+    bool empty() const { return least > most; }
+};
 template <class Depth>
-float farthestAbove(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels, Depth&& depthOf) {
-    float most = std::numeric_limits<float>::lowest();
-    const auto keep = [&](const glm::vec3& v) { most = std::max(most, depthOf(v)); };
+DepthRange depthsAbove(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels, Depth&& depthOf) {
+    DepthRange range;
+    const auto keep = [&](const glm::vec3& v) {
+        const float d = depthOf(v);
+        range.least = std::min(range.least, d);
+        range.most = std::max(range.most, d);
+    };
     ShadowVolume volume;
     if (!shadowVolume(light, receiver.corners, padTexels, volume)) {
         for (const glm::vec3& c : caster.corners) keep(c);
-        return most;
+        return range;
     }
-    // The apex (the light) is never the farthest point: the faces' vertices are all that count.
+    // The apex (the light) lies outside the caster: the faces' vertices are all that count.
     visitFaces(caster.corners, std::span<const Plane>(volume.planes.data(), static_cast<std::size_t>(volume.count)), keep);
-    return most;
+    return range;
+}
+
+// SideTolerance as distance along the light: world distance for a directional light, a
+// relative scale of depth for a perspective one. Lookup: how far in front of its geometry a
+// lookup may land (the constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and
+// the normal offset), 2 texels for the rasterised layers' and the comparison's rounding, and the
+// tint tests' tolerance (2^-10 of the depth range, or of 1 - window depth, about 2^-10 of the
+// view depth z), given 4 times over. Surface: the normal offset, which may turn a lookup from the
+// light, the 2 texels of rounding, and 2^-12 of depth (ownLayersFrom's 2^-12 and its quarter texel).
+float sideMargin(const gpu::LightData& light, SideTolerance kind) {
+    const bool lookup = kind == SideTolerance::Lookup;
+    const float texels = (lookup ? light.shadow.x + 10.0f * light.shadow.y : 0.0f) + light.shadow.z + 2.0f;
+    const float tolerance = lookup ? 1.0f / 256.0f : 1.0f / 4096.0f;
+    if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional)
+        return texels * light.shadow.w + (light.directionFar.w - light.positionNear.w) * tolerance;
+    return 2.0f * (texels * light.shadow.w + tolerance);
+}
+
+// tintFootprint cut to the points that may lie beyond (`beyond`) or short of the caster's depth
+// range above the receiver, widened by sideMargin: the half-space on the far side of its
+// largest depth, or on the near side of its least.
+scene::Bounds footprintAcross(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                              bool beyond, SideTolerance tolerance) {
+    if (caster.empty || receiver.empty) return {};
+    const glm::vec3 p = glm::vec3(light.positionNear);
+    const float margin = sideMargin(light, tolerance);
+    const int type = static_cast<int>(light.colorType.w);
+    // Orthographic depth is linear in distance along d; a perspective light's texel and tolerance
+    // grow with its depth z, so the limit is the caster's depth scaled.
+    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
+    if (type == gpu::kLightPoint) {
+        // A cube map's depth is the largest axis distance: the points within a limit form a box.
+        const DepthRange range = depthsAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
+            const glm::vec3 q = glm::abs(c - p);
+            return std::max(q.x, std::max(q.y, q.z));
+        });
+        if (range.empty()) return {};
+        // Beyond a box is no half-space: short of the caster, all of the footprint (conservative).
+        if (!beyond) return footprint(light, caster, receiver, padTexels, nullptr);
+        const float limit = (1.0f + margin) * range.most;
+        scene::Bounds world;  // (a turned receiver: its world box, conservatively)
+        for (const glm::vec3& c : receiver.corners) world.add(c);
+        const scene::Bounds within{glm::max(world.min, p - limit), glm::min(world.max, p + limit)};
+        if (glm::any(glm::greaterThan(within.min, within.max))) return {};
+        return footprint(light, caster, within, padTexels, nullptr);
+    }
+    const bool directional = type == gpu::kLightDirectional;
+    const DepthRange range = depthsAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
+        return directional ? glm::dot(d, c) : glm::dot(d, c - p);
+    });
+    if (range.empty()) return {};
+    const float origin = directional ? 0.0f : glm::dot(d, p);
+    // Depth z(x) = d·x - origin: beyond keeps z <= most + margin, short keeps z >= least - margin.
+    const float limit = directional ? (beyond ? range.most + margin : range.least - margin)
+                                    : (beyond ? range.most * (1.0f + margin) : range.least / (1.0f + margin));
+    const Plane cut = beyond ? Plane{-d, origin + limit} : Plane{d, -origin - limit};
+    return footprint(light, caster, receiver, padTexels, &cut);
 }
 
 }  // namespace
@@ -214,48 +305,13 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& cast
 }
 
 scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
-                                     float padTexels) {
-    if (caster.empty || receiver.empty) return {};
-    // How far in front of its geometry a receiver's lookup may land, in texels at its depth: the
-    // constant bias, the slope bias at shadow_coord.glsl's tan θ cap of 10 and the normal offset,
-    // and 2 for the rasterised layers' and the comparison's rounding.
-    const float texels = light.shadow.x + 10.0f * light.shadow.y + light.shadow.z + 2.0f;
-    const float texelScale = light.shadow.w;
-    const glm::vec3 p = glm::vec3(light.positionNear);
-    const float none = std::numeric_limits<float>::lowest();
-    const int type = static_cast<int>(light.colorType.w);
-    if (type == gpu::kLightDirectional) {
-        // Orthographic depth is linear in distance along d; colouredByTint's test allows 2^-10 of
-        // the depth range besides (the half-float alpha), given here 4 times over.
-        const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
-        const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) { return glm::dot(d, c); });
-        if (farthest == none) return {};
-        const float limit = farthest + texels * texelScale + (light.directionFar.w - light.positionNear.w) / 256.0f;
-        const Plane behind{-d, limit};
-        return footprint(light, caster, receiver, padTexels, &behind);
-    }
-    // Perspective maps: a texel and the test's tolerance (2^-10 of 1 - window depth, about 2^-10
-    // of the view depth z) both grow with z, so the limit is the caster's farthest z scaled up.
-    const float relative = 1.0f + 2.0f * (texels * texelScale + 1.0f / 256.0f);
-    if (type == gpu::kLightPoint) {
-        // A cube map's depth is the largest axis distance: the points within a limit form a box.
-        const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
-            const glm::vec3 q = glm::abs(c - p);
-            return std::max(q.x, std::max(q.y, q.z));
-        });
-        if (farthest == none) return {};
-        const float limit = relative * farthest;
-        scene::Bounds world;  // (a turned receiver: its world box, conservatively)
-        for (const glm::vec3& c : receiver.corners) world.add(c);
-        const scene::Bounds within{glm::max(world.min, p - limit), glm::min(world.max, p + limit)};
-        if (glm::any(glm::greaterThan(within.min, within.max))) return {};
-        return footprint(light, caster, within, padTexels, nullptr);
-    }
-    const glm::vec3 axis = glm::normalize(glm::vec3(light.directionFar));
-    const float farthest = farthestAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) { return glm::dot(axis, c - p); });
-    if (farthest == none) return {};
-    const Plane behind{-axis, glm::dot(axis, p) + relative * farthest};  // z(x) = axis·(x - p) <= limit
-    return footprint(light, caster, receiver, padTexels, &behind);
+                                     float padTexels, SideTolerance tolerance) {
+    return footprintAcross(light, caster, receiver, padTexels, true, tolerance);
+}
+
+scene::Bounds tintFootprintNotInFront(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
+                                      float padTexels, SideTolerance tolerance) {
+    return footprintAcross(light, caster, receiver, padTexels, false, tolerance);
 }
 
 PixelRect PixelRect::intersected(const PixelRect& r) const {

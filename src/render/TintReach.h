@@ -42,15 +42,32 @@ struct OrientedBox {
 // the receiver's depth past its own.)
 scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels);
 
+// How near a receiver may come to a caster's layers before it counts as on their side: a lookup
+// that compares its biased depth with the layers (Lookup: an opaque receiver's tint product, whose
+// bias lands it in front of its geometry), or one that places the receiver by its own surface
+// (Surface: a translucent receiver's builds, which divide its own layers out where they are the
+// farthest, within 2^-12 of its depth, or read no other layer at all).
+enum class SideTolerance { Lookup, Surface };
+
 // The part of tintFootprint's box whose points may lie not clearly behind every layer of the
 // caster as the light sees them: within the farthest light depth of the caster's part in the
-// receiver's shadow volume (the caster above it) plus the distance a
-// lookup may land in front of its receiver (the light's bias knobs) and the tint test's tolerance.
-// Elsewhere in the footprint a receiver is behind every layer around it, where CSSM's lookup takes
-// the tint map's product and its fallback loop is never due (ShadowTechnique::behindLayersBuild).
-// A half-space along the light's direction or axis cuts the receiver (a box around a point light).
+// receiver's shadow volume (the caster above it) plus, with SideTolerance::Lookup, the distance
+// a lookup may land in front of its receiver (the light's bias knobs) and the tint test's
+// tolerance. Elsewhere in the footprint a receiver is behind every layer around it, where CSSM's
+// lookup takes the tint map's product and its fallback loop is never due
+// (ShadowTechnique::behindLayersBuild). A half-space along the light's direction or axis cuts the
+// receiver (a box around a point light).
 scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
-                                     float padTexels);
+                                     float padTexels, SideTolerance tolerance = SideTolerance::Lookup);
+
+// The part of tintFootprint's box whose points may lie not clearly in front of every layer of the
+// caster: beyond the least light depth of the caster's part in the receiver's shadow volume, less
+// the same tolerance. Elsewhere in the footprint the caster's layers all lie behind the receiver,
+// so they put no colour on it: a translucent receiver there is reached by no layer but its own
+// (ShadowTechnique::ownLayersBuild). Point lights: the whole footprint (short of a box around the
+// light is no half-space).
+scene::Bounds tintFootprintNotInFront(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
+                                      float padTexels, SideTolerance tolerance = SideTolerance::Surface);
 
 // A pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {

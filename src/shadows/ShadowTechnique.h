@@ -187,10 +187,13 @@ public:
     // fallback loop. The renderer draws with it where render/TintReach.h shows every caster whose
     // shadow may reach a receiver lies in front of it (tintFootprintNotBehind).
     virtual bool behindLayersBuild() const { return false; }
-    // Whether the lookup's translucent build has a cheaper variant for receivers that only their
-    // own layers reach (RECEIVER_UNTINTED with MATERIAL_TRANSLUCENT): the tint with those layers
-    // divided out, without what sorts out other layers. The renderer draws with it where no other
-    // translucent caster's shadow may reach a flat or convex receiver (Draw::ownLayersKnown).
+    // Whether the lookup's translucent build has cheaper variants for receivers whose own layers
+    // are known (flat or convex: Draw::ownLayersKnown) where every other translucent layer lies on
+    // one side of them: behind (RECEIVER_UNTINTED with MATERIAL_TRANSLUCENT: only their own layers
+    // in front, read from no map) or in front (RECEIVER_BEHIND_LAYERS with MATERIAL_TRANSLUCENT:
+    // the tint with their own layers divided out), without what sorts out layers on both sides.
+    // The renderer draws with them where render/TintReach.h shows that side for every other caster
+    // (tintFootprintNotInFront, tintFootprintNotBehind).
     virtual bool ownLayersBuild() const { return false; }
     // Binds textures and sets uniforms the lookup needs on the lighting program.
     virtual void bindLookup(const gl::Program& lighting) const = 0;

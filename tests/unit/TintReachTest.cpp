@@ -219,16 +219,56 @@ TEST(TintReach, EveryReceiverPointNotBehindTheCasterIsInItsNotBehindFootprint) {
     int notBehind = 0;
     for (int trial = 0; trial < 300; ++trial) {
         const RandomTrials::Trial t = random.trial(trial, 3.0f, 2.0f, 2.0f);  // overlapping often
+        // Both tolerances: an opaque receiver's lookup's and a translucent one's surface's.
         const scene::Bounds f = tintFootprintNotBehind(t.light, t.caster.box(), t.receiver, 0.0f);
+        const scene::Bounds near = tintFootprintNotBehind(t.light, t.caster.box(), t.receiver, 0.0f, SideTolerance::Surface);
         for (int i = 0; i < 200; ++i) {
             const glm::vec3 p = random.pointIn(t.receiver);
             if (!t.caster.meets(p, t.beyond(p))) continue;
             ++notBehind;
             ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
+            ASSERT_TRUE(inside(near, p)) << "trial " << trial << " kind " << t.kind << " (surface tolerance)";
         }
     }
     std::printf("%d receiver points not behind their caster\n", notBehind);
     EXPECT_GT(notBehind, 1000);  // the trials do put receivers among the casters' layers
+}
+
+// The mirror image: each receiver point with a layer of the caster in front of it (the ray from
+// it to the light meets the caster) is in the not-in-front box; elsewhere every layer of the
+// caster lies behind the receiver and puts no colour on it.
+TEST(TintReach, EveryReceiverPointBehindPartOfTheCasterIsInItsNotInFrontFootprint) {
+    RandomTrials random(12);
+    int shadowed = 0, tighter = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const RandomTrials::Trial t = random.trial(trial, 3.0f, 2.0f, 2.0f);
+        const scene::Bounds f = tintFootprintNotInFront(t.light, t.caster.box(), t.receiver, 0.0f);
+        const scene::Bounds all = tintFootprint(t.light, t.caster.box(), t.receiver, 0.0f);
+        if (!all.empty()) tighter += f.empty() || glm::length(f.extent()) < 0.9f * glm::length(all.extent());
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 p = random.pointIn(t.receiver);
+            if (!t.caster.meets(p, t.towards(p))) continue;
+            ++shadowed;
+            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
+        }
+    }
+    EXPECT_GT(shadowed, 1000);
+    EXPECT_GT(tighter, 10) << "the cut leaves out receivers in front of the caster";
+}
+
+TEST(TintReach, APaneAboveABlockIsInFrontOfItButTheGroundIsNotInFrontOfThePane) {
+    const scene::Bounds ground = box({-10, 0, -10}, {10, 0, 10});
+    const scene::Bounds pane = box({-1, 2.5f, -1}, {1, 2.52f, 1});
+    const scene::Bounds block = box({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f});
+    for (const gpu::LightData& light : {directional({0.1f, -1, 0.05f}, 0.01f), perspective(gpu::kLightSpot, {0, 5, 0}, 1e-3f),
+                                        perspective(gpu::kLightPoint, {0, 5, 0}, 1e-3f)}) {
+        const int type = static_cast<int>(light.colorType.w);
+        ASSERT_FALSE(tintFootprint(light, block, pane, 4.0f).empty()) << type << ": the pane lies in the block's shadow volume";
+        // A box around a point light is no half-space: its cut keeps the whole footprint.
+        EXPECT_EQ(tintFootprintNotInFront(light, block, pane, 4.0f).empty(), type != gpu::kLightPoint)
+            << type << ": the block lies wholly behind the pane";
+        EXPECT_FALSE(tintFootprintNotInFront(light, pane, ground, 4.0f).empty()) << type << ": the pane lies in front of the ground";
+    }
 }
 
 TEST(TintReach, APartitionCoversEveryPixelOnceOnTheRightSide) {

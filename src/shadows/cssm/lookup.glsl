@@ -400,6 +400,15 @@ vec3 cubeTileSum(ShadowSite s, int side) {
     return sum;
 }
 
+// The light a translucent receiver's own layers let through to it: none of a flat part's lies in
+// front of it; a convex solid's entry face lies in front of each point where the light leaves it
+// (its outward normal turned from the light), once. `NdotL`: with the normal turned to the camera,
+// as lighting.frag lights both faces.
+vec3 ownLayersInFront(float NdotL) {
+    float outwardNdotL = gl_FrontFacing ? NdotL : -NdotL;
+    return uClosedPart != 0 && outwardNdotL < 0.0 ? receiverTransmittance : vec3(1.0);
+}
+
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     // s in texels, and ∂s/∂x, ∂s/∂y, taken before any branch. Cube maps: coordinates along the
@@ -409,18 +418,26 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     vec2 dsdx = dFdx(sTexels), dsdy = dFdy(sTexels);
     if (!s.inside) return vec3(1.0);
 #if defined(RECEIVER_UNTINTED) && defined(MATERIAL_TRANSLUCENT)
-    // No translucent layer but the receiver's own reaches its texels, and it is flat or a convex
-    // solid (render/TintReach.h, Draw::ownLayersKnown): the layers at each texel are known, and
-    // the deterministic tint with them divided out (bilinearly, so its rim as the light sees it
-    // is exact too) is what the stochastic counts below estimate. Only those tell layers in
-    // front from layers behind, which this receiver has none of but its own.
-    return compareAt(s, vec2(0.0), 0.0) * bilinearThroughOwnLayers(s);
+    // Every other translucent layer around this receiver lies behind it, or none is there
+    // (render/TintReach.h, tintFootprintNotInFront), and it is flat or a convex solid
+    // (Draw::ownLayersKnown): the only layers in front of it are its own, known without a fetch.
+    return compareAt(s, vec2(0.0), 0.0) * ownLayersInFront(NdotL);
 #elif defined(RECEIVER_UNTINTED)
     // No translucent layer reaches this receiver's texels (render/TintReach.h): with the opaque
     // casters in the depth map, the coloured term is exactly 1 and only the hard test is left.
     if (kSeparateOpaque) return vec3(compareAt(s, vec2(0.0), 0.0));
 #endif
-#if defined(RECEIVER_BEHIND_LAYERS) && !defined(MATERIAL_TRANSLUCENT)
+#if defined(RECEIVER_BEHIND_LAYERS) && defined(MATERIAL_TRANSLUCENT)
+    // Every other translucent layer around this receiver lies in front of it (tintFootprintNotBehind),
+    // and its own layers are known: the deterministic tint with those divided out (bilinearly, so
+    // that its rim as the light sees it is exact too) is what the stochastic counts below
+    // estimate. Only those tell layers in front from layers behind, which this receiver has none
+    // of but its own. Cube maps go on to the whole lookup (s.cube is a constant of the light's
+    // slot, so 2D maps' builds hold none of it): its one-texel division where the own layers are
+    // known, the counts where not (a slab's rim, where light enters through a side: the 2 x 2
+    // division was 0.12 off there, GL test TranslucentReceiver).
+    if (!s.cube) return compareAt(s, vec2(0.0), 0.0) * bilinearThroughOwnLayers(s);
+#elif defined(RECEIVER_BEHIND_LAYERS)
     // Every translucent layer around this receiver lies in front of it (render/TintReach.h,
     // tintFootprintNotBehind; ColoredStochasticShadowMap::behindLayersBuild): colouredByTint's
     // behindEveryLayer holds, so the tint's product is its answer, without the fallback loop
