@@ -412,21 +412,27 @@ std::vector<PixelRect> snapped(const PixelRect& own, const std::vector<PixelRect
 
 using RectsByLookup = std::array<std::vector<PixelRect>, 3>;  // TintLookup's order
 
+// `own` cut by `first`: its pixels on the `settledInside` side of it take lookup `settled`, the
+// others are cut again by `second` into `inSecond` and `offSecond`.
+RectsByLookup cutTwice(const PixelRect& own, const std::vector<PixelRect>& first, bool settledInside, TintLookup settled,
+                       const std::vector<PixelRect>& second, TintLookup inSecond, TintLookup offSecond) {
+    RectsByLookup rects;
+    RectPartition byFirst = partition(own, first);
+    rects[static_cast<int>(settled)] = std::move(settledInside ? byFirst.inside : byFirst.outside);
+    for (const PixelRect& r : settledInside ? byFirst.outside : byFirst.inside) {
+        RectPartition bySecond = partition(r, second);
+        auto &in = rects[static_cast<int>(inSecond)], &off = rects[static_cast<int>(offSecond)];
+        in.insert(in.end(), bySecond.inside.begin(), bySecond.inside.end());
+        off.insert(off.end(), bySecond.outside.begin(), bySecond.outside.end());
+    }
+    return rects;
+}
+
 // An opaque receiver's `own` in disjoint rectangles per lookup: the pixels some not-behind
 // footprint may cover take the whole lookup, the rest of the footprints' pixels the behind-layers
 // build, the others none.
 RectsByLookup rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind, const std::vector<PixelRect>& tinted) {
-    RectsByLookup rects;
-    RectPartition first = partition(own, snapped(own, notBehind));
-    rects[static_cast<int>(TintLookup::Whole)] = std::move(first.inside);
-    for (const PixelRect& r : first.outside) {
-        RectPartition second = partition(r, tinted);
-        auto& behind = rects[static_cast<int>(TintLookup::BehindLayers)];
-        auto& untinted = rects[static_cast<int>(TintLookup::Untinted)];
-        behind.insert(behind.end(), second.inside.begin(), second.inside.end());
-        untinted.insert(untinted.end(), second.outside.begin(), second.outside.end());
-    }
-    return rects;
+    return cutTwice(own, snapped(own, notBehind), true, TintLookup::Whole, tinted, TintLookup::BehindLayers, TintLookup::Untinted);
 }
 
 // A translucent receiver's: pixels where every other layer lies behind it (off every not-in-front
@@ -435,18 +441,8 @@ RectsByLookup rectsByLookup(const PixelRect& own, const std::vector<PixelRect>& 
 // of their product (BehindLayers), and pixels that may have layers on both sides the whole lookup.
 RectsByLookup translucentRectsByLookup(const PixelRect& own, const std::vector<PixelRect>& notBehind,
                                        const std::vector<PixelRect>& notInFront) {
-    RectsByLookup rects;
-    RectPartition first = partition(own, snapped(own, notInFront));
-    rects[static_cast<int>(TintLookup::Untinted)] = std::move(first.outside);
-    const std::vector<PixelRect> behindNot = snapped(own, notBehind);
-    for (const PixelRect& r : first.inside) {
-        RectPartition second = partition(r, behindNot);
-        auto& whole = rects[static_cast<int>(TintLookup::Whole)];
-        auto& behind = rects[static_cast<int>(TintLookup::BehindLayers)];
-        whole.insert(whole.end(), second.inside.begin(), second.inside.end());
-        behind.insert(behind.end(), second.outside.begin(), second.outside.end());
-    }
-    return rects;
+    return cutTwice(own, snapped(own, notInFront), false, TintLookup::Untinted, snapped(own, notBehind), TintLookup::Whole,
+                    TintLookup::BehindLayers);
 }
 
 // The boxes `cut` gives (tintFootprintNotBehind, tintFootprintNotInFront) for the parts of `box`
