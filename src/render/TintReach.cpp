@@ -198,14 +198,22 @@ bool shadowVolume(const gpu::LightData& light, const OrientedBox::Corners& caste
 }
 
 // tintFootprint, with the receiver cut further by `limit` when it is given (a half-space).
+// The part of `receiver` inside the caster's shadow volume (`volume`; nullptr: unbounded, all of
+// it), cut further by `limit` when it is given (a half-space).
+scene::Bounds footprintIn(const ShadowVolume* volume, const OrientedBox& receiver, const Plane* limit) {
+    if (!volume) return insideAll(receiver, {}, nullptr);  // all of it may be tinted
+    ShadowVolume v = *volume;
+    if (limit) v.planes[static_cast<std::size_t>(v.count++)] = *limit;
+    const std::span<const Plane> planes(v.planes.data(), static_cast<std::size_t>(v.count));
+    return insideAll(receiver, planes, v.hasApex ? &v.apex : nullptr, limit ? &planes.back() : nullptr);
+}
+
+// tintFootprint, with the receiver cut further by `limit` when it is given.
 scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
                         const Plane* limit) {
     if (caster.empty || receiver.empty) return {};
     ShadowVolume volume;
-    if (!shadowVolume(light, caster.corners, padTexels, volume)) return insideAll(receiver, {}, nullptr);  // all of it may be tinted
-    if (limit) volume.planes[static_cast<std::size_t>(volume.count++)] = *limit;
-    const std::span<const Plane> planes(volume.planes.data(), static_cast<std::size_t>(volume.count));
-    return insideAll(receiver, planes, volume.hasApex ? &volume.apex : nullptr, limit ? &planes.back() : nullptr);
+    return footprintIn(shadowVolume(light, caster.corners, padTexels, volume) ? &volume : nullptr, receiver, limit);
 }
 
 // The least and largest `depthOf` over the part of `caster` inside the shadow volume of
@@ -251,48 +259,61 @@ float sideMargin(const gpu::LightData& light, SideTolerance kind) {
     return 2.0f * (texels * light.shadow.w + tolerance);
 }
 
-// tintFootprint cut to the points that may lie beyond (`beyond`) or short of the caster's depth
-// range above the receiver, widened by sideMargin: the half-space on the far side of its
-// largest depth, or on the near side of its least.
-scene::Bounds footprintAcross(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
-                              bool beyond, SideTolerance tolerance) {
-    if (caster.empty || receiver.empty) return {};
+}  // namespace
+
+// tintFootprint cut to the points that may lie beyond the caster's depth range above the
+// receiver (notBehind) and short of it (notInFront), widened by sideMargin: the half-space on the
+// far side of its largest depth, or on the near side of its least. The caster's volume and depth
+// range serve both cuts; a side not asked for stays empty.
+TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                             SideTolerance tolerance, bool notBehind, bool notInFront) {
+    TintSides sides;
+    if (caster.empty || receiver.empty || !(notBehind || notInFront)) return sides;
+    ShadowVolume casterVolume;
+    const ShadowVolume* volume = shadowVolume(light, caster.corners, padTexels, casterVolume) ? &casterVolume : nullptr;
     const glm::vec3 p = glm::vec3(light.positionNear);
     const float margin = sideMargin(light, tolerance);
     const int type = static_cast<int>(light.colorType.w);
-    // Orthographic depth is linear in distance along d; a perspective light's texel and tolerance
-    // grow with its depth z, so the limit is the caster's depth scaled.
-    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
     if (type == gpu::kLightPoint) {
         // A cube map's depth is the largest axis distance: the points within a limit form a box.
         const DepthRange range = depthsAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
             const glm::vec3 q = glm::abs(c - p);
             return std::max(q.x, std::max(q.y, q.z));
         });
-        if (range.empty()) return {};
+        if (range.empty()) return sides;
         // Beyond a box is no half-space: short of the caster, all of the footprint (conservative).
-        if (!beyond) return footprint(light, caster, receiver, padTexels, nullptr);
+        if (notInFront) sides.notInFront = footprintIn(volume, receiver, nullptr);
+        if (!notBehind) return sides;
         const float limit = (1.0f + margin) * range.most;
         scene::Bounds world;  // (a turned receiver: its world box, conservatively)
         for (const glm::vec3& c : receiver.corners) world.add(c);
         const scene::Bounds within{glm::max(world.min, p - limit), glm::min(world.max, p + limit)};
-        if (glm::any(glm::greaterThan(within.min, within.max))) return {};
-        return footprint(light, caster, within, padTexels, nullptr);
+        if (glm::all(glm::lessThanEqual(within.min, within.max))) sides.notBehind = footprintIn(volume, within, nullptr);
+        return sides;
     }
+    // Orthographic depth is linear in distance along d; a perspective light's texel and tolerance
+    // grow with its depth z, so the limit is the caster's depth scaled.
+    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
     const bool directional = type == gpu::kLightDirectional;
     const DepthRange range = depthsAbove(light, caster, receiver, padTexels, [&](const glm::vec3& c) {
         return directional ? glm::dot(d, c) : glm::dot(d, c - p);
     });
-    if (range.empty()) return {};
+    if (range.empty()) return sides;
     const float origin = directional ? 0.0f : glm::dot(d, p);
     // Depth z(x) = d·x - origin: beyond keeps z <= most + margin, short keeps z >= least - margin.
-    const float limit = directional ? (beyond ? range.most + margin : range.least - margin)
-                                    : (beyond ? range.most * (1.0f + margin) : range.least / (1.0f + margin));
-    const Plane cut = beyond ? Plane{-d, origin + limit} : Plane{d, -origin - limit};
-    return footprint(light, caster, receiver, padTexels, &cut);
+    if (notBehind) {
+        const float limit = directional ? range.most + margin : range.most * (1.0f + margin);
+        const Plane cut{-d, origin + limit};
+        sides.notBehind = footprintIn(volume, receiver, &cut);
+    }
+    if (notInFront) {
+        const float limit = directional ? range.least - margin : range.least / (1.0f + margin);
+        const Plane cut{d, -origin - limit};
+        sides.notInFront = footprintIn(volume, receiver, &cut);
+    }
+    return sides;
 }
 
-}  // namespace
 
 OrientedBox::OrientedBox(const scene::Bounds& world) : corners(world.corners()), empty(world.empty()) {}
 
@@ -306,13 +327,14 @@ scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& cast
 
 scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                      float padTexels, SideTolerance tolerance) {
-    return footprintAcross(light, caster, receiver, padTexels, true, tolerance);
+    return tintFootprintSides(light, caster, receiver, padTexels, tolerance, true, false).notBehind;
 }
 
 scene::Bounds tintFootprintNotInFront(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                       float padTexels, SideTolerance tolerance) {
-    return footprintAcross(light, caster, receiver, padTexels, false, tolerance);
+    return tintFootprintSides(light, caster, receiver, padTexels, tolerance, false, true).notInFront;
 }
+
 
 PixelRect PixelRect::intersected(const PixelRect& r) const {
     PixelRect i{std::max(x0, r.x0), std::max(y0, r.y0), std::min(x1, r.x1), std::min(y1, r.y1)};

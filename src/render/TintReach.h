@@ -69,6 +69,15 @@ scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const Oriented
 scene::Bounds tintFootprintNotInFront(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                       float padTexels, SideTolerance tolerance = SideTolerance::Surface);
 
+// Both of the above at once, as far as asked (`notBehind`, `notInFront`; a side not asked for
+// stays empty): they share the caster's volume and its depth range above the receiver.
+struct TintSides {
+    scene::Bounds notBehind, notInFront;
+    bool empty() const { return notBehind.empty() && notInFront.empty(); }
+};
+TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                             SideTolerance tolerance, bool notBehind, bool notInFront);
+
 // A pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
