@@ -459,6 +459,9 @@ RectsByLookup translucentRectsByLookup(const PixelRect& own, const std::vector<P
 // cut apart, 1.07 before the not-in-front cells; the not-behind cells at 4 x 4 saved 0.1 ms and
 // gave a strip of the red pane back to the whole lookup.
 constexpr int kFinestLevel = 3, kFinestTranslucentLevel = 3;
+// How far from its texel an opaque receiver's behind-layers test reads the tint map: the bilinear
+// fetch's texel, and one for rounding.
+constexpr float kBehindTestReachTexels = 2.0f;
 
 // The quarters of `box` across its two longest sides under `model` (in the world).
 std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4& model) {
@@ -522,6 +525,11 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
         if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
         // The normal offset moves the receiver's lookup that many texels besides.
         const float pad = reach + light.shadow.z + 2.0f;
+        // Whether an opaque receiver is behind every layer is the behind-layers build's test alone
+        // (colouredByTint's behindEveryLayer: the bilinear tint at its texel, 2 x 2 texels), so
+        // only casters that reach those texels count there; the whole lookup's farther reads
+        // (CSSM's tiles, 18 texels) matter only to whether any tint is read at all (`pad`).
+        const float behindPad = kBehindTestReachTexels + light.shadow.z + 2.0f;
         for (const OrientedBox& caster : casters) {
             const scene::Bounds footprint = tintFootprint(light, caster, receiver, pad);
             const PixelRect r = screenRect(footprint, viewProj, width, height).intersected(own);
@@ -544,7 +552,7 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
                     if (!sides.notInFront.empty()) addNotInFront(sides.notInFront);
                 });
             } else {
-                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, pad); }, footprint, glm::mat4(1.0f), 0,
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, glm::mat4(1.0f), 0,
                         kFinestLevel, into(f.notBehind));
             }
         }
