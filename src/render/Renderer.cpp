@@ -470,13 +470,14 @@ std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4&
     const int a = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
     const int b = a == 0 ? (size.y >= size.z ? 1 : 2) : a == 1 ? (size.x >= size.z ? 0 : 2) : (size.x >= size.y ? 0 : 1);
     const float midA = 0.5f * (box.min[a] + box.max[a]), midB = 0.5f * (box.min[b] + box.max[b]);
-    std::array<scene::Bounds, 4> q;
-    for (int i = 0; i < 4; ++i) {
-        q[static_cast<std::size_t>(i)] = box;
-        (i & 1 ? q[static_cast<std::size_t>(i)].min[a] : q[static_cast<std::size_t>(i)].max[a]) = midA;
-        (i & 2 ? q[static_cast<std::size_t>(i)].min[b] : q[static_cast<std::size_t>(i)].max[b]) = midB;
+    std::array<scene::Bounds, 4> quarter;
+    for (std::size_t i = 0; i < 4; ++i) {
+        scene::Bounds& c = quarter[i];
+        c = box;
+        (i & 1 ? c.min[a] : c.max[a]) = midA;
+        (i & 2 ? c.min[b] : c.max[b]) = midB;
     }
-    return q;
+    return quarter;
 }
 
 // `cut`: the receiver part's box (an OrientedBox) to the box it keeps.

@@ -51,13 +51,15 @@ glm::vec3 perpendicular(const glm::vec3& d) {
     return glm::normalize(glm::cross(d, std::abs(d.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
 }
 
+// A hexahedron's faces, corners in Bounds::corner's order, each a cycle.
+constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+
 // Every vertex of the part of the hexahedron `box` (corners in Bounds::corner's order: a box or
 // its affine image) inside every plane, face by face (Sutherland-Hodgman). With the apex where
 // the planes meet, these are all the vertices of the convex intersection but those inside `box`
 // on a plane that does not pass through the apex.
 template <class Visit>
 void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, Visit&& visit) {
-    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     for (const auto& face : kFaces) {
         Polygon poly;
         for (int c : face) poly.v[static_cast<std::size_t>(poly.n++)] = box[static_cast<std::size_t>(c)];
@@ -72,7 +74,6 @@ void visitFaces(const OrientedBox::Corners& box, std::span<const Plane> planes, 
 // The planes of a hexahedron's faces (corners in Bounds::corner's order), facing in and moved out
 // by a hair of its size for rounding; a face without area (a flat box's sides) gives none.
 int facePlanes(const OrientedBox::Corners& box, std::array<Plane, 6>& out) {
-    static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
     glm::vec3 centre(0.0f);
     for (const glm::vec3& c : box) centre += c * 0.125f;
     const float slack = 1e-4f * glm::length(box[7] - box[0]) + 1e-6f;
@@ -208,12 +209,11 @@ scene::Bounds footprintIn(const ShadowVolume* volume, const OrientedBox& receive
     return insideAll(receiver, planes, v.hasApex ? &v.apex : nullptr, limit ? &planes.back() : nullptr);
 }
 
-// tintFootprint, with the receiver cut further by `limit` when it is given.
-scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
-                        const Plane* limit) {
+// tintFootprint.
+scene::Bounds footprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels) {
     if (caster.empty || receiver.empty) return {};
     ShadowVolume volume;
-    return footprintIn(shadowVolume(light, caster.corners, padTexels, volume) ? &volume : nullptr, receiver, limit);
+    return footprintIn(shadowVolume(light, caster.corners, padTexels, volume) ? &volume : nullptr, receiver, nullptr);
 }
 
 // The least and largest `depthOf` over the part of `caster` inside the shadow volume of
@@ -322,7 +322,7 @@ OrientedBox::OrientedBox(const scene::Bounds& local, const glm::mat4& model) : e
 }
 
 scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels) {
-    return footprint(light, caster, receiver, padTexels, nullptr);
+    return footprint(light, caster, receiver, padTexels);
 }
 
 scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
