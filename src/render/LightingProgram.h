@@ -35,9 +35,9 @@ gl::Program buildLightingProgram(const std::filesystem::path& lookup, const std:
 enum class TintLookup { Whole, Untinted, BehindLayers };
 
 // The lighting program in up to 24 builds: with or without a diffuse texture, for opaque or
-// translucent surfaces, with or without an alpha test, and each TintLookup. MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample
-// under `uHasTexture != 0` for every fragment whatever the uniform says (measured, default scene,
-// none: ~2.5 ms of a 21 ms opaque pass).
+// translucent surfaces, with or without an alpha test, and each TintLookup. MATERIAL_UNTEXTURED
+// never samples the texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment
+// whatever the uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
 // MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
 // layers (CSSM's nearest-layer statistics). MATERIAL_NO_ALPHA_TEST (materials without a cutoff)
 // leaves the alpha test's `discard` out, as DepthCasterProgram does for casters. The

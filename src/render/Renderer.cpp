@@ -480,16 +480,16 @@ std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4&
     return quarter;
 }
 
-// `cut`: the receiver part's box (an OrientedBox) to the box it keeps.
+// An opaque receiver's cells of the world box `box`: `cut` takes a cell to the box it keeps.
 template <class Cut, class Emit>
-void cellsOf(const Cut& cut, const scene::Bounds& box, const glm::mat4& model, int level, int finest, Emit&& emit) {
-    const scene::Bounds part = cut(OrientedBox(box, model));
+void cellsOf(const Cut& cut, const scene::Bounds& box, int level, Emit&& emit) {
+    const scene::Bounds part = cut(OrientedBox(box));
     if (part.empty()) return;
-    if (level == finest) {
+    if (level == kFinestLevel) {
         emit(part);
         return;
     }
-    for (const scene::Bounds& q : quarters(box, model)) cellsOf(cut, q, model, level + 1, finest, emit);
+    for (const scene::Bounds& q : quarters(box, glm::mat4(1.0f))) cellsOf(cut, q, level + 1, emit);
 }
 
 // A translucent receiver's cells, both sides at once (tintFootprintSides), each side as far down
@@ -553,8 +553,8 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
                     if (!sides.notInFront.empty()) addNotInFront(sides.notInFront);
                 });
             } else {
-                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, glm::mat4(1.0f), 0,
-                        kFinestLevel, into(f.notBehind));
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, 0,
+                        into(f.notBehind));
             }
         }
     }

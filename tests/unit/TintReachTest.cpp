@@ -140,6 +140,21 @@ struct RandomTrials {
         const glm::vec3 t(0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng), 0.5f + 0.5f * u(rng));
         return b.min + t * (b.max - b.min);
     }
+    // 200 random points of the trial's receiver: how many the caster shadows (their segment to
+    // the light meets it), and how many of those lie outside `box`.
+    struct Shadowed {
+        int points = 0, outside = 0;
+    };
+    Shadowed shadowedPoints(const Trial& t, const scene::Bounds& box) {
+        Shadowed s;
+        for (int i = 0; i < 200; ++i) {
+            const glm::vec3 p = pointIn(t.receiver);
+            if (!t.caster.meets(p, t.towards(p))) continue;
+            ++s.points;
+            s.outside += inside(box, p) ? 0 : 1;
+        }
+        return s;
+    }
 };
 
 // No padding: each receiver point whose segment to the light crosses the caster lies in the
@@ -149,14 +164,10 @@ TEST(TintReach, EveryReceiverPointBehindTheCasterIsInItsFootprint) {
     int behind = 0, checked = 0;
     for (int trial = 0; trial < 300; ++trial) {
         const RandomTrials::Trial t = random.trial(trial, 4.0f, 1.0f, 4.0f);
-        const scene::Bounds f = tintFootprint(t.light, t.caster.box(), t.receiver, 0.0f);
-        for (int i = 0; i < 200; ++i) {
-            const glm::vec3 p = random.pointIn(t.receiver);
-            ++checked;
-            if (!t.caster.meets(p, t.towards(p))) continue;
-            ++behind;
-            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
-        }
+        const RandomTrials::Shadowed s = random.shadowedPoints(t, tintFootprint(t.light, t.caster.box(), t.receiver, 0.0f));
+        checked += 200;
+        behind += s.points;
+        ASSERT_EQ(s.outside, 0) << "trial " << trial << " kind " << t.kind;
     }
     EXPECT_GT(behind, checked / 50);  // the trials do put receivers behind casters
 }
@@ -245,12 +256,9 @@ TEST(TintReach, EveryReceiverPointBehindPartOfTheCasterIsInItsNotInFrontFootprin
         const scene::Bounds f = tintFootprintNotInFront(t.light, t.caster.box(), t.receiver, 0.0f);
         const scene::Bounds all = tintFootprint(t.light, t.caster.box(), t.receiver, 0.0f);
         if (!all.empty()) tighter += f.empty() || glm::length(f.extent()) < 0.9f * glm::length(all.extent());
-        for (int i = 0; i < 200; ++i) {
-            const glm::vec3 p = random.pointIn(t.receiver);
-            if (!t.caster.meets(p, t.towards(p))) continue;
-            ++shadowed;
-            ASSERT_TRUE(inside(f, p)) << "trial " << trial << " kind " << t.kind;
-        }
+        const RandomTrials::Shadowed s = random.shadowedPoints(t, f);
+        shadowed += s.points;
+        ASSERT_EQ(s.outside, 0) << "trial " << trial << " kind " << t.kind;
     }
     EXPECT_GT(shadowed, 1000);
     EXPECT_GT(tighter, 10) << "the cut leaves out receivers in front of the caster";
