@@ -24,6 +24,8 @@ hd=(--size 1920x1080 --shadow-res 2048)
 # The GPU idles at 345 MHz: a warm-up run first, never timed.
 step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmup-seconds 5 --no-images --out "$work/warm"
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
+# The float target and its resolve pass against the default straight-into-sRGB frame (render/SrgbTarget.h).
+step "default scene, float target" 40 penumbra bench --techniques none,hard,cssm2 "${hd[@]}" --float-target "${short[@]}" --out "$work/float-target"
 step "default scene, maps redrawn" 150 penumbra bench --techniques all "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/redrawn"
 # What CSSM's farthest-layer bound (tint_behind_all, on by default) costs where maps are redrawn.
 step "default scene, maps redrawn, cssm without tint_behind_all" 40 penumbra bench --techniques cssm1,cssm2 "${hd[@]}" --redraw-shadow-maps --param tint_behind_all=false "${short[@]}" --out "$work/redrawn-no-tba"

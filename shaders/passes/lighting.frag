@@ -48,8 +48,11 @@ layout(location = 0, index = 1) out vec4 outTransmit;
 #ifdef TRANSLUCENT_PEEL
 layout(binding = kUnitPeelDepth) uniform sampler2D uPeelDepth;    // the previous layer's depth (0 before the first)
 #endif
-#if defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_DUAL_PEEL)
+#if defined(TRANSLUCENT_PEEL) || defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM) || defined(TRANSLUCENT_DUAL_PEEL) || (defined(FOG_IN_SHADING) && defined(MATERIAL_TRANSLUCENT))
 layout(binding = kUnitOpaqueDepth) uniform sampler2D uOpaqueDepth;  // the opaque surfaces' depth
+#endif
+#ifdef FOG_IN_SHADING
+#include "../common/fog.glsl"
 #endif
 #if defined(TRANSLUCENT_STOCHASTIC_DEPTH) || defined(TRANSLUCENT_STOCHASTIC_ACCUM)
 #include "../common/random.glsl"
@@ -164,6 +167,9 @@ void main() {
     if (uOutputMode == 5) { outColor = vec4(ambient, 1.0); outTransmit = vec4(0.0); return; }
     if (uTranslucentPass == 0) {
         outColor = vec4(ambient + diffuse + specular, 1.0);
+#ifdef FOG_IN_SHADING
+        outColor.rgb = mix(outColor.rgb, uBackground, fogAmount(length(P - uCameraPos)));
+#endif
         outTransmit = vec4(0.0);
         return;
     }
@@ -172,6 +178,14 @@ void main() {
     vec3 stopped = materialStopped(coverage);
     outColor = vec4((ambient + diffuse) * stopped + specular * coverage, 1.0);
     outTransmit = vec4(vec3(1.0) - stopped, 1.0);
+#if defined(FOG_IN_SHADING) && defined(MATERIAL_TRANSLUCENT)  // only there: llvmpipe runs this code for every opaque fragment too
+    // The float target fogs the composited pixel by the opaque surface behind it (resolve.frag):
+    // F = mix(dst T + S, bg, f). dst is fogged by that same f already, so src S' = S (1 - f) +
+    // bg f (1 - T) gives dst' T + S' = F, for each layer of a back-to-front stack in turn.
+    float behind = texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r;
+    float f = behind < 1.0 ? fogAmount(cameraDistance(behind, gl_FragCoord.xy / vec2(textureSize(uOpaqueDepth, 0)))) : 0.0;
+    outColor.rgb = outColor.rgb * (1.0 - f) + uBackground * f * stopped;  // 1 - T = stopped
+#endif
 #ifdef TRANSLUCENT_STOCHASTIC_DEPTH
     // Pass 1: each sample of the pixel is covered with probability = opacity (the mean of ρ),
     // so the multisampled depth holds, per sample, the nearest surface that happened to cover it.

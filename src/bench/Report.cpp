@@ -181,7 +181,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
           {"calibrate", settings.calibrate}, {"fixed_camera", settings.fixedCamera}, {"transparency", render::toString(settings.render.transparency)},
           {"reuse_still_casters", settings.render.reuseStillCasters}, {"depth_prepass", settings.render.depthPrepass},
           {"cull_solid_back_faces", settings.render.cullSolidBackFaces},
-          {"tint_only_where_reached", settings.render.tintOnlyWhereReached},
+          {"tint_only_where_reached", settings.render.tintOnlyWhereReached}, {"float_target", settings.render.floatTarget},
           {"parameters", parameters}}},
         {"baseline", baseline ? json(baseline->value("created", "")) : json(nullptr)},
         {"cases", cases},

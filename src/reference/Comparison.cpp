@@ -82,6 +82,7 @@ render::RenderOptions optionsFor(render::RenderOptions options, const std::strin
     options.parameters = parameters;
     options.output = render::OutputMode::Shaded;  // each capture sets its own
     options.debugOverlay = false;                 // (the maps drawn over the frame are no surface)
+    options.floatTarget = true;                   // the captures read floats (Renderer::readLinear)
     return options;
 }
 

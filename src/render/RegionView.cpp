@@ -10,6 +10,7 @@ RenderOptions regionOptions(const RenderOptions& base, const scene::Region& regi
     if (region.shadowResolution > 0) o.shadowResolution = region.shadowResolution;
     o.parameters.assign(region.parameters.begin(), region.parameters.end());
     o.strictParameters = true;  // a misspelt parameter in a scene file is an error, not a no-op
+    o.floatTarget = true;  // it keeps the pixels it owns only (setReceivers): the resolve's discard; its programs built for that at once
     return o;
 }
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::render {
@@ -92,7 +93,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     options_.technique = chosenTechnique(options_, scene_);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
-    lightLayout_ = initialLightLayout(scene_.lights, anyTranslucentCaster(gpu_.draws(0.0f, scene_.camera.position)));
+    lightLayout_ = withFogDefine(initialLightLayout(scene_.lights, anyTranslucentCaster(gpu_.draws(0.0f, scene_.camera.position))));
     lightingDefines_ = lightingDefines(*technique_);
     lighting_ = buildLighting(*technique_, lightingDefines_);
     PassPrograms passes = buildPassPrograms();
@@ -112,6 +113,24 @@ void Renderer::setTechnique(const std::string& name) {
     lightingDefines_ = std::move(defines);
     oit_.reset();  // its lighting variants include the old technique's lookup
     options_.technique = name;
+    releaseBoundTextures();
+}
+
+// llvmpipe holds the textures of the last draw's texture units until a later draw binds others,
+// though they are deleted: a technique's maps would outlive it until the next frame's first draw.
+// A draw that rasterises nothing, with a program that samples only the renderer's own targets,
+// hands them back now. (The float target's resolve pass did so at the end of every frame.)
+void Renderer::releaseBoundTextures() {
+    if (targetW_ == 0) return;  // nothing drawn yet
+    gl::unbindTextureUnits(gpu::kLightingUnits);
+    hdrFbo_.bind();
+    const gl::ScopedPassState scope(gl::PassState::fullscreen());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 0, 0);
+    resolve_.use();
+    emptyVao_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 std::string Renderer::reloadShaders() {
@@ -181,7 +200,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
     // A material made translucent at run time rebuilds the programs once (useLightLayout).
     const bool translucentCasters = anyTranslucentCaster(draws);
-    useLightLayout(lightLayoutDefines(block, slots_.sun, translucentCasters));
+    useLightLayout(withFogDefine(lightLayoutDefines(block, slots_.sun, translucentCasters)));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
@@ -271,18 +290,21 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     tintSplit.scissored = partial;
     tintShading_ = tally(tintSplit, draws);
     tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
-    hdrFbo_.bind();
-    glViewport(0, 0, width, height);
     const bool shaded = options_.output == OutputMode::Shaded;
+    srgbFrame_ = shadesIntoSrgb();
+    const GLuint frameFbo = srgbFrame_ ? srgb_.begin(target, width, height, depth_) : hdrFbo_.id();
+    glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
+    glViewport(0, 0, width, height);
+    if (srgbFrame_) glEnable(GL_FRAMEBUFFER_SRGB);  // encoded on the way in, blended in linear
     // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
     // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
     const glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
     // NVIDIA validates the current program's samplers on a clear: another engine's program, still
     // current though deleted, must not be judged against this frame's texture units.
     glUseProgram(0);
-    glClearNamedFramebufferfv(hdrFbo_.id(), GL_COLOR, 0, &clear.x);
+    glClearNamedFramebufferfv(frameFbo, GL_COLOR, 0, &clear.x);
     const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(hdrFbo_.id(), GL_DEPTH, 0, &farDepth);
+    glClearNamedFramebufferfv(frameFbo, GL_DEPTH, 0, &farDepth);
     {
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
@@ -299,7 +321,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         const TransparencyMode mode = options_.transparency;
         const bool sorted = mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles;
         if (shaded ? sorted : options_.debugTranslucent) {
+            const bool anyTranslucent = std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.visible && d.translucent; });
+            fogDepth_ = srgbFrame_ && scene_.fog.enabled && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
             drawSurfaces(draws, true, camera, aspect, &tintSplit);
+            fogDepth_ = nullptr;
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
             oit_->render(mode, options_.peelLayers, gpu_, draws,
@@ -311,7 +336,12 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     {
         gl::DebugGroup group("resolve");
         timer_.begin(Pass::Post);
-        resolve(target, width, height, camera, aspect);
+        if (srgbFrame_) {
+            glDisable(GL_FRAMEBUFFER_SRGB);
+            srgb_.finish(target, width, height);
+        } else {
+            resolve(target, width, height, camera, aspect);
+        }
         if (options_.debugOverlay) drawOverlay(target, width, height);
         timer_.end(Pass::Post);
     }
@@ -375,7 +405,9 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     program.set("uTranslucentPass", translucent ? 1 : 0);
     program.set("uOutputMode", static_cast<int>(options_.output));
     program.set("uDebugLight", options_.debugLight);
+    if (srgbFrame_) setFogUniforms(program, camera, aspect);  // FOG_IN_SHADING
     placeholders_.bindAll();
+    if (fogDepth_) fogDepth_->bind(gpu::kUnitOpaqueDepth);
     technique_->bindLookup(program);
     int projector = 0;
     for (const auto& light : scene_.lights)
@@ -774,12 +806,8 @@ void Renderer::drawDepthFirst(const std::vector<Draw>& draws, const scene::Camer
         }
 }
 
-void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    glViewport(0, 0, width, height);
-    const gl::ScopedPassState scope(gl::PassState::fullscreen());
-    const bool shaded = options_.output == OutputMode::Shaded;
-    const gl::Program& program = shaded && scene_.fog.enabled ? foggedResolve_ : resolve_;
+// shaders/common/fog.glsl's uniforms.
+void Renderer::setFogUniforms(const gl::Program& program, const scene::Camera& camera, float aspect) const {
     // clip z = P22 z + P32, clip w = -z: the view depth -z at window depth d is
     // P32 / (2d - 1 + P22) = (P32 / 2) / (d + (P22 - 1) / 2); x / -z = ndc.x / P00, likewise y.
     const glm::mat4 projection = camera.projection(aspect);
@@ -787,6 +815,28 @@ void Renderer::resolve(GLuint target, int width, int height, const scene::Camera
     program.set("uRaySlope", glm::vec2(1.0f / projection[0][0], 1.0f / projection[1][1]));
     program.set("uBackground", scene_.background);
     program.set("uFog", glm::vec2(scene_.fog.start, scene_.fog.end));
+}
+
+// The frame goes straight into 8-bit sRGB (render/SrgbTarget.h) unless it must be read back as
+// floats, shows a debug channel (linear values), keeps another renderer's pixels (the resolve's
+// discard) or composites transparency in passes of its own onto the float target.
+bool Renderer::shadesIntoSrgb() const {
+    const bool sorted = options_.transparency == TransparencyMode::SortedObjects || options_.transparency == TransparencyMode::SortedTriangles;
+    return !options_.floatTarget && options_.output == OutputMode::Shaded && !ownPixelsOnly_ && sorted;
+}
+
+std::vector<std::string> Renderer::withFogDefine(std::vector<std::string> layout) const {
+    if (shadesIntoSrgb() && scene_.fog.enabled) layout.emplace_back("FOG_IN_SHADING");
+    return layout;
+}
+
+void Renderer::resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width, height);
+    const gl::ScopedPassState scope(gl::PassState::fullscreen());
+    const bool shaded = options_.output == OutputMode::Shaded;
+    const gl::Program& program = shaded && scene_.fog.enabled ? foggedResolve_ : resolve_;
+    setFogUniforms(program, camera, aspect);
     program.set("uEncodeSrgb", shaded ? 1 : 0);
     program.set("uOwnPixelsOnly", ownPixelsOnly_ ? 1 : 0);
     hdr_.bind(0);
@@ -822,6 +872,8 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
 }
 
 std::vector<float> Renderer::readLinear() const {
+    if (srgbFrame_)
+        throw std::logic_error("Renderer::readLinear: the last frame was shaded into 8-bit sRGB; RenderOptions::floatTarget keeps the float target");
     std::vector<float> pixels(static_cast<std::size_t>(targetW_) * targetH_ * 4);
     glGetTextureImage(hdr_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
     return pixels;

@@ -1,7 +1,8 @@
 #pragma once
 // A frame is a list of passes: shadow maps (the technique's), opaque surfaces, translucent
-// surfaces back to front, then resolve (fog, clamp, sRGB) and debug overlays. Each pass is
-// timed with a GPU timer query.
+// surfaces back to front, then resolve (fog, clamp, sRGB) and debug overlays; or the surfaces are
+// shaded straight into 8-bit sRGB, fog included, and nothing is resolved (render/SrgbTarget.h).
+// Each pass is timed with a GPU timer query.
 #include "gl/Buffer.h"
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
@@ -12,6 +13,7 @@
 #include "render/GpuScene.h"
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
+#include "render/SrgbTarget.h"
 #include "render/TintReach.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
@@ -82,6 +84,12 @@ struct RenderOptions {
     // (render/TintReach.h): the same pixels, less shading where colour cannot fall. false gives
     // every receiver the whole lookup (`--tint-everywhere`), for measuring what it saves.
     bool tintOnlyWhereReached = true;
+    // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
+    // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
+    // (render/SrgbTarget.h) wherever the frame allows it (shaded output, sorted transparency):
+    // the same picture to within rounding, without the resolve pass. The front-ends turn it off
+    // unless asked (`--float-target`); tests and `compare`, which read floats, keep it.
+    bool floatTarget = true;
 };
 
 // The technique `options` asks for on `scene`: its own, else the scene's, else "hard".
@@ -145,6 +153,7 @@ public:
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
     // The last frame's linear HDR colour (before fog and sRGB), RGBA floats, bottom row first.
+    // Throws std::logic_error where that frame was shaded into 8-bit sRGB (RenderOptions::floatTarget).
     std::vector<float> readLinear() const;
     int effectiveResolution(const scene::Light& light) const;
 
@@ -178,7 +187,12 @@ private:
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
     LightingPrograms buildLighting(const shadows::ShadowTechnique& technique, std::vector<std::string> defines) const;
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
+    void setFogUniforms(const gl::Program& program, const scene::Camera& camera, float aspect) const;
+    bool shadesIntoSrgb() const;
+    // `layout` and FOG_IN_SHADING where the lighting shader applies the fog (shadesIntoSrgb).
+    std::vector<std::string> withFogDefine(std::vector<std::string> layout) const;
     void drawOverlay(GLuint target, int width, int height);
+    void releaseBoundTextures();
 
     scene::Scene& scene_;
     RenderOptions options_;
@@ -204,6 +218,9 @@ private:
     // Float HDR colour + depth; 32-bit so that debug channels (positions) keep their precision.
     gl::Texture hdr_, depth_;
     gl::Framebuffer hdrFbo_;
+    SrgbTarget srgb_;  // where the frame goes when it skips the float target
+    bool srgbFrame_ = false;  // the last frame did
+    const gl::Texture* fogDepth_ = nullptr;  // during the translucent pass: the opaque depth its fog reads
     int targetW_ = 0, targetH_ = 0;
     shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
     std::vector<std::size_t> shadowTriangles_;

@@ -9,19 +9,25 @@
 namespace penumbra::test {
 namespace {
 
-TEST(SplitView, EachSideHasItsTechniquesPixels) {
+// Shaded into the float target and resolved, or straight into 8-bit sRGB (RenderOptions::floatTarget).
+class SplitView : public ::testing::TestWithParam<bool> {};
+
+TEST_P(SplitView, EachSideHasItsTechniquesPixels) {
+    const bool floatTarget = GetParam();
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 7, 6], "target": [0, 0, 0] },
       "lights": [ { "type": "directional", "direction": [-0.3, -1, -0.4], "size": 3, "shadow": { "resolution": 512 } } ],
       "objects": [ { "shape": "plane", "size": [12, 12] },
                    { "shape": "box", "position": [-2, 1, 0] }, { "shape": "box", "position": [2, 1, 0] } ] })");
     const int w = 96, h = 64;
-    const auto hard = renderRgba8(s, {.technique = "hard"}, w, h), soft = renderRgba8(s, {.technique = "pcf-poisson16"}, w, h);
+    const auto hard = renderRgba8(s, {.technique = "hard", .floatTarget = floatTarget}, w, h),
+               soft = renderRgba8(s, {.technique = "pcf-poisson16", .floatTarget = floatTarget}, w, h);
     ASSERT_NE(hard, soft) << "the two techniques must differ somewhere for the test to mean anything";
 
     render::RenderOptions left, right;
     left.technique = "hard";
     right.technique = "pcf-poisson16";
+    left.floatTarget = right.floatTarget = floatTarget;
     render::SplitView split(s, left, right);
     split.setDivider(0.375f);
     const int divider = split.dividerColumn(w);
@@ -51,6 +57,9 @@ TEST(SplitView, EachSideHasItsTechniquesPixels) {
     split.swap();  // the key that swaps the halves
     compare(soft, hard);
 }
+
+INSTANTIATE_TEST_SUITE_P(Targets, SplitView, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "FloatTarget" : "Srgb8Target"; });
 
 }  // namespace
 }  // namespace penumbra::test

@@ -1,0 +1,121 @@
+// Shading straight into 8-bit sRGB (RenderOptions::floatTarget false, render/SrgbTarget.h) gives
+// the picture the float target and its resolve pass give, to within rounding: fog on opaque and
+// translucent surfaces, two panes stacked over a fogged floor and over the background, into an
+// offscreen texture (shaded into directly) and into a renderbuffer (copied into).
+#include "GlTestSupport.h"
+
+#include "gl/Framebuffer.h"
+#include "render/Offscreen.h"
+
+#include <stdexcept>
+
+namespace penumbra::test {
+namespace {
+
+// Nothing brighter than white behind the panes: an 8-bit target clamps what lies behind glass
+// before blending, the float target after (docs/measurements.md).
+scene::Scene fogAndPanes() {
+    return sceneFromJson(R"({
+      "camera": { "position": [0, 2.5, 9], "target": [0, 0.5, 0], "fov_deg": 50, "far": 60 },
+      "background": [0.55, 0.6, 0.7], "ambient": [0.15, 0.15, 0.15], "fog": { "start": 4, "end": 30 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.7, "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [60, 60], "material": { "diffuse": [0.8, 0.75, 0.7] } },
+                   { "shape": "box", "position": [2, 0.5, -2], "material": { "diffuse": [0.7, 0.2, 0.2] } },
+                   { "shape": "plane", "size": [4, 3], "position": [-0.5, 1.5, 0], "rotation_deg": [90, 0, 0],
+                     "material": { "diffuse": [0.1, 0.4, 0.1], "transmission": [0.2, 0.8, 0.3] } },
+                   { "shape": "plane", "size": [4, 3], "position": [0.8, 2.2, -1.5], "rotation_deg": [90, 0, 0],
+                     "material": { "diffuse": [0.1, 0.1, 0.4], "alpha": 0.6, "transmission": [0.3, 0.4, 0.9] } } ] })");
+}
+
+render::RenderOptions options(const std::string& technique, bool floatTarget) {
+    render::RenderOptions o = optionsFor(technique);
+    o.floatTarget = floatTarget;
+    return o;
+}
+
+struct Difference {
+    int largest = 0, pixelsOff = 0;  // by more than 1/255 in any channel
+};
+Difference compareBytes(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+    Difference d;
+    for (std::size_t p = 0; p + 3 < a.size(); p += 4) {
+        int off = 0;
+        for (std::size_t c = 0; c < 3; ++c) off = std::max(off, std::abs(int(a[p + c]) - int(b[p + c])));
+        d.largest = std::max(d.largest, off);
+        d.pixelsOff += off > 1;
+    }
+    return d;
+}
+
+// The picture must hold what the comparison is about: the background, the fog over the far
+// floor, a pane over the floor. Rows count from the top (OffscreenTarget::readRgba8).
+void expectFogAndPanes(const std::vector<std::uint8_t>& rgba, int w) {
+    auto at = [&](int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * w + x) * 4;
+        return glm::ivec3(rgba[i], rgba[i + 1], rgba[i + 2]);
+    };
+    const glm::ivec3 sky = at(20, 10), farFloor = at(20, 39), nearFloor = at(80, 90), pane = at(60, 45);
+    EXPECT_NEAR(sky.b, 218, 2) << "the background (0.7 linear)";
+    EXPECT_GT(farFloor.b, nearFloor.b + 10) << "the far floor fogged towards the background";
+    EXPECT_GT(pane.g, pane.r + 30) << "the green pane over the floor";
+}
+
+class SrgbTarget : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SrgbTarget, ShadesIntoAnOffscreenTextureWhatTheFloatTargetResolves) {
+    scene::Scene s = fogAndPanes();
+    const int w = 160, h = 96;
+    const auto resolved = renderRgba8(s, options(GetParam(), true), w, h);
+    const auto direct = renderRgba8(s, options(GetParam(), false), w, h);
+    expectFogAndPanes(resolved, w);
+    const Difference d = compareBytes(direct, resolved);
+    EXPECT_LE(d.largest, 1) << d.pixelsOff << " pixels off by more than 1/255";
+}
+
+TEST_P(SrgbTarget, CopiesIntoATargetItCannotShadeIntoWhatTheFloatTargetResolves) {
+    scene::Scene s = fogAndPanes();
+    const int w = 160, h = 96;
+    GLuint colour = 0;
+    glCreateRenderbuffers(1, &colour);
+    glNamedRenderbufferStorage(colour, GL_RGBA8, w, h);
+    gl::Framebuffer window;  // like a window's: a renderbuffer, not a texture
+    glNamedFramebufferRenderbuffer(window.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    window.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    window.checkComplete("renderbuffer target");
+    auto draw = [&](bool floatTarget) {
+        const float magenta[4] = {1, 0, 1, 1};  // whatever the last draw left there must not pass
+        glClearNamedFramebufferfv(window.id(), GL_COLOR, 0, magenta);
+        render::Renderer renderer(s, options(GetParam(), floatTarget));
+        renderer.render(0.0f, s.camera, w, h, window.id());
+        GLint bound = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+        EXPECT_EQ(static_cast<GLuint>(bound), window.id()) << "what draws next (the window's UI) must draw into the output";
+        return render::readFramebufferRgba8(window.id(), w, h);
+    };
+    const auto resolved = draw(true), copied = draw(false);
+    glDeleteRenderbuffers(1, &colour);
+    const Difference d = compareBytes(copied, resolved);
+    EXPECT_LE(d.largest, 1) << d.pixelsOff << " pixels off by more than 1/255";
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, SrgbTarget, ::testing::Values("hard", "cssm2", "pcss"),
+                         [](const auto& info) { return testNameOf(info.param); });
+
+TEST(SrgbTargetUse, LinearReadBackOfAFrameShadedIntoSrgbIsAnErrorThatSaysWhatToSet) {
+    scene::Scene s = fogAndPanes();
+    render::Renderer renderer(s, options("hard", false));
+    render::OffscreenTarget target(32, 32);
+    renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+    try {
+        (void)renderer.readLinear();
+        FAIL() << "readLinear must not return the float target's stale or empty contents";
+    } catch (const std::logic_error& e) {
+        EXPECT_NE(std::string(e.what()).find("floatTarget"), std::string::npos) << e.what();
+    }
+    renderer.setOutputMode(render::OutputMode::Visibility);  // a debug channel keeps linear values: the float target
+    renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+    EXPECT_EQ(renderer.readLinear().size(), 32u * 32u * 4u);
+}
+
+}  // namespace
+}  // namespace penumbra::test
