@@ -165,7 +165,12 @@ void main() {
 
     vec3 ambient = uAmbient * albedo;
     if (uOutputMode == 5) { outColor = vec4(ambient, 1.0); outTransmit = vec4(0.0); return; }
-    if (uTranslucentPass == 0) {
+    // Opaque builds are never drawn in the translucent pass: what follows the block is dead code to
+    // them (llvmpipe would run it for every fragment, masked, behind a uniform test).
+#ifdef MATERIAL_TRANSLUCENT
+    if (uTranslucentPass == 0)
+#endif
+    {
         outColor = vec4(ambient + diffuse + specular, 1.0);
 #ifdef FOG_IN_SHADING
         outColor.rgb = mix(outColor.rgb, uBackground, fogAmount(length(P - uCameraPos)));
