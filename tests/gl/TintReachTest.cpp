@@ -159,7 +159,7 @@ scene::Scene glassReceivers() {
 // upper slab alone they give t, as the split does with or without the lower one).
 TEST(TintReachTranslucent, StackedSlabsGetTheLightTheirLayersInFrontLetThrough) {
     const glm::vec3 t(0.1f, 0.9f, 0.1f);
-    for (const char* technique : {"cssm2", "cssm1"})
+    for (const char* technique : {"hard", "cssm2", "cssm1"})
         for (const bool upward : {true, false}) {
             scene::Scene s = sceneFromJson(std::string(R"({
               "camera": { "position": [0, 1.6, 0.001], "target": [0, )") + (upward ? "2.5" : "0") + R"(, 0], "up": [0, 0, -1], "fov_deg": 30 },
@@ -189,7 +189,7 @@ TEST(TintReachTranslucent, StackedSlabsGetTheLightTheirLayersInFrontLetThrough) 
 TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeLookupDoesButAtRims) {
     // Also the first scene: a floating pane in front of a glass block on the ground.
     for (const bool glass : {true, false})
-        for (const char* technique : {"cssm2", "cssm1"}) {
+        for (const char* technique : {"hard", "cssm2", "cssm1"}) {
             scene::Scene s = glass ? glassReceivers() : colouredShadows();
             const Pair both = renderBothWays(s, technique, {}, render::TransparencyMode::SortedObjects);
             const render::Renderer::TintShading& t = both.shading;
@@ -209,7 +209,7 @@ TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeL
                 }
             std::printf("%s, %s: %zu pixels off by over 3/255, largest difference %.4f\n", glass ? "glass" : "pane and block",
                         technique, off, most);
-            EXPECT_LE(off, 25u) << technique;  // 8 now; 180-563 with each of the faults above
+            EXPECT_LE(off, 40u) << technique;  // cssm 7-9, hard 21 now (nearest-texel rims); 180-563 with each of the faults above
         }
 }
 

@@ -400,15 +400,6 @@ vec3 cubeTileSum(ShadowSite s, int side) {
     return sum;
 }
 
-// The light a translucent receiver's own layers let through to it: none of a flat part's lies in
-// front of it; a convex solid's entry face lies in front of each point where the light leaves it
-// (its outward normal turned from the light), once. `NdotL`: with the normal turned to the camera,
-// as lighting.frag lights both faces.
-vec3 ownLayersInFront(float NdotL) {
-    float outwardNdotL = gl_FrontFacing ? NdotL : -NdotL;
-    return uClosedPart != 0 && outwardNdotL < 0.0 ? receiverTransmittance : vec3(1.0);
-}
-
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     // s in texels, and ∂s/∂x, ∂s/∂y, taken before any branch. Cube maps: coordinates along the

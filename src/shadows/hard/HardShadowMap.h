@@ -9,6 +9,9 @@ class HardShadowMap final : public SharedMapTechnique {
 public:
     std::string name() const override { return "hard"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/hard/lookup.glsl"; }
+    // Glass receivers with every other layer on one side of them (ShadowTechnique::ownLayersBuild):
+    // builds that read their own layers in front alone, or divide them out of the tint.
+    bool ownLayersBuild() const override { return true; }
     void bindLookup(const gl::Program&) const override { maps_.bind(); }
 };
 

@@ -220,6 +220,16 @@ vec3 bilinearThroughOwnLayers(ShadowSite s) {
     }
     return sum;
 }
+
+// The light a translucent receiver's own layers let through to it: none of a flat part's lies in
+// front of it; a convex solid's entry face lies in front of each point where the light leaves it
+// (its outward normal turned from the light), once. `NdotL`: with the normal turned to the camera,
+// as lighting.frag lights both faces.
+vec3 ownLayersInFront(float NdotL) {
+    float outwardNdotL = gl_FrontFacing ? NdotL : -NdotL;
+    return uClosedPart != 0 && outwardNdotL < 0.0 ? receiverTransmittance : vec3(1.0);
+}
+
 // The centre of the texel the lookup lands in, in texels (on cube face `face`): the texel nearest
 // filtering reads.
 vec2 landingTexel(ShadowSite s, out int face) { return clamp(floor(lookupTexel(s, face)), vec2(0.0), vec2(s.resolution - 1.0)) + 0.5; }
