@@ -101,6 +101,8 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     foggedResolve_ = std::move(passes.foggedResolve);
     overlay_ = std::move(passes.overlay);
     lines_ = std::move(passes.lines);
+    releaseColour_ = gl::Texture::create2D(GL_RGBA8, 1, 1);  // made now: a soak counts live GL objects
+    releaseTarget_ = gl::Framebuffer::colourOnly(releaseColour_, -1, "texture release draw");
 }
 
 void Renderer::setTechnique(const std::string& name) {
@@ -120,17 +122,25 @@ void Renderer::setTechnique(const std::string& name) {
 // though they are deleted: a technique's maps would outlive it until the next frame's first draw.
 // A draw that rasterises nothing, with a program that samples only the renderer's own targets,
 // hands them back now. (The float target's resolve pass did so at the end of every frame.)
+// Into a 1x1 target of its own, and the framebuffers bound before are bound again: a window's UI
+// may draw after a technique change in its panel.
 void Renderer::releaseBoundTextures() {
-    if (targetW_ == 0) return;  // nothing drawn yet
+    GLint drawBound = 0, readBound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawBound);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readBound);
     gl::unbindTextureUnits(gpu::kLightingUnits);
-    hdrFbo_.bind();
-    const gl::ScopedPassState scope(gl::PassState::fullscreen());
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, 0, 0);
-    resolve_.use();
-    emptyVao_.bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_SCISSOR_TEST);
+    releaseTarget_.bind();
+    {
+        const gl::ScopedPassState scope(gl::PassState::fullscreen());
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, 0, 0);
+        resolve_.use();
+        emptyVao_.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(drawBound));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readBound));
 }
 
 std::string Renderer::reloadShaders() {
@@ -171,20 +181,27 @@ int Renderer::effectiveResolution(const scene::Light& light) const {
     return options_.shadowResolution > 0 ? options_.shadowResolution : light.shadow.resolution;
 }
 
-void Renderer::ensureTargets(int w, int h) {
-    if (w == targetW_ && h == targetH_) return;
+// The float colour target only for frames that resolve it: a frame shaded into sRGB never needs
+// it (14.7 MB at 1280x720, 133 MB at 3840x2160).
+void Renderer::ensureTargets(int w, int h, bool floatTarget) {
+    if (w != targetW_ || h != targetH_) {
+        depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
+        depth_.setFilter(GL_NEAREST, GL_NEAREST);
+        hdr_ = {};
+        hdrFbo_ = {};
+        targetW_ = w;
+        targetH_ = h;
+    }
+    if (!floatTarget || hdr_.id() != 0) return;
     hdr_ = gl::Texture::create2D(GL_RGBA32F, w, h);
-    depth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, w, h);
     hdr_.setFilter(GL_NEAREST, GL_NEAREST);
-    depth_.setFilter(GL_NEAREST, GL_NEAREST);
     hdrFbo_ = gl::Framebuffer::colourAndDepth(hdr_, depth_, "main colour target");
-    targetW_ = w;
-    targetH_ = h;
 }
 
 void Renderer::render(float time, const scene::Camera& camera, int width, int height, GLuint target, Columns columns) {
     if (width <= 0 || height <= 0) return;  // minimised: nothing to draw into
-    ensureTargets(width, height);
+    srgbFrame_ = shadesIntoSrgb();
+    ensureTargets(width, height, !srgbFrame_);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const glm::mat4 cameraViewProj = camera.projection(aspect) * camera.view();
     const std::vector<Draw> draws = gpu_.draws(time, camera.position);
@@ -291,7 +308,6 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     tintShading_ = tally(tintSplit, draws);
     tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
     const bool shaded = options_.output == OutputMode::Shaded;
-    srgbFrame_ = shadesIntoSrgb();
     const GLuint frameFbo = srgbFrame_ ? srgb_.begin(target, width, height, depth_) : hdrFbo_.id();
     glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
     glViewport(0, 0, width, height);
@@ -874,6 +890,7 @@ void Renderer::drawOverlay(GLuint target, int width, int height) {
 std::vector<float> Renderer::readLinear() const {
     if (srgbFrame_)
         throw std::logic_error("Renderer::readLinear: the last frame was shaded into 8-bit sRGB; RenderOptions::floatTarget keeps the float target");
+    if (hdr_.id() == 0) return {};  // no frame drawn yet
     std::vector<float> pixels(static_cast<std::size_t>(targetW_) * targetH_ * 4);
     glGetTextureImage(hdr_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)), pixels.data());
     return pixels;

@@ -158,7 +158,7 @@ public:
     int effectiveResolution(const scene::Light& light) const;
 
 private:
-    void ensureTargets(int width, int height);
+    void ensureTargets(int width, int height, bool floatTarget);
     // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
     struct TintedPixels {
         TintLookup lookup = TintLookup::Whole;  // of the whole draw, unless it is split
@@ -215,12 +215,15 @@ private:
     gl::Buffer lightBlock_;
     gl::VertexArray emptyVao_;
     gl::Sampler overlaySampler_{GL_LINEAR, GL_LINEAR};  // reads depth maps without comparison
-    // Float HDR colour + depth; 32-bit so that debug channels (positions) keep their precision.
+    // Float HDR colour (made for frames that resolve it) + depth; 32-bit so that debug channels
+    // (positions) keep their precision.
     gl::Texture hdr_, depth_;
     gl::Framebuffer hdrFbo_;
     SrgbTarget srgb_;  // where the frame goes when it skips the float target
     bool srgbFrame_ = false;  // the last frame did
     const gl::Texture* fogDepth_ = nullptr;  // during the translucent pass: the opaque depth its fog reads
+    gl::Texture releaseColour_;  // releaseBoundTextures's 1x1 target
+    gl::Framebuffer releaseTarget_;
     int targetW_ = 0, targetH_ = 0;
     shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
     std::vector<std::size_t> shadowTriangles_;

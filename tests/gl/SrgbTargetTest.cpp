@@ -117,5 +117,22 @@ TEST(SrgbTargetUse, LinearReadBackOfAFrameShadedIntoSrgbIsAnErrorThatSaysWhatToS
     EXPECT_EQ(renderer.readLinear().size(), 32u * 32u * 4u);
 }
 
+// A technique change hands the old maps back with a draw of its own (Renderer::releaseBoundTextures),
+// which must leave the framebuffer the caller had bound: a window's panel draws after it.
+TEST(SrgbTargetUse, ATechniqueChangeLeavesTheCallersFramebufferBound) {
+    scene::Scene s = fogAndPanes();
+    render::Renderer renderer(s, options("hard", false));
+    render::OffscreenTarget target(32, 32);
+    renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+    render::OffscreenTarget panel(8, 8);
+    glBindFramebuffer(GL_FRAMEBUFFER, panel.framebuffer());
+    renderer.setTechnique("pcss");
+    GLint draw = 0, read = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    EXPECT_EQ(static_cast<GLuint>(draw), panel.framebuffer());
+    EXPECT_EQ(static_cast<GLuint>(read), panel.framebuffer());
+}
+
 }  // namespace
 }  // namespace penumbra::test
