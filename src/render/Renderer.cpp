@@ -161,6 +161,7 @@ std::string Renderer::reloadShaders() {
         lines_ = std::move(passes.lines);
         oit_.reset();  // rebuilt from the new files on first use
         depthFirst_.reset();
+        releaseBoundTextures();  // the old technique's maps, as setTechnique hands them back
         return "";
     } catch (const std::exception& e) {
         return e.what();
@@ -335,10 +336,9 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         // Debug channels show the nearest opaque surface, or with debugTranslucent the nearest
         // surface (drawSurfaces: depth-tested and written, not blended).
         const TransparencyMode mode = options_.transparency;
-        const bool sorted = mode == TransparencyMode::SortedObjects || mode == TransparencyMode::SortedTriangles;
-        if (shaded ? sorted : options_.debugTranslucent) {
+        if (shaded ? isSorted(mode) : options_.debugTranslucent) {
             const bool anyTranslucent = std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.visible && d.translucent; });
-            fogDepth_ = srgbFrame_ && scene_.fog.enabled && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
+            fogDepth_ = fogInShading() && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
             drawSurfaces(draws, true, camera, aspect, &tintSplit);
             fogDepth_ = nullptr;
         } else if (shaded) {
@@ -421,7 +421,7 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     program.set("uTranslucentPass", translucent ? 1 : 0);
     program.set("uOutputMode", static_cast<int>(options_.output));
     program.set("uDebugLight", options_.debugLight);
-    if (srgbFrame_) setFogUniforms(program, camera, aspect);  // FOG_IN_SHADING
+    if (fogInShading()) setFogUniforms(program, camera, aspect);
     placeholders_.bindAll();
     if (fogDepth_) fogDepth_->bind(gpu::kUnitOpaqueDepth);
     technique_->bindLookup(program);
@@ -837,12 +837,14 @@ void Renderer::setFogUniforms(const gl::Program& program, const scene::Camera& c
 // floats, shows a debug channel (linear values), keeps another renderer's pixels (the resolve's
 // discard) or composites transparency in passes of its own onto the float target.
 bool Renderer::shadesIntoSrgb() const {
-    const bool sorted = options_.transparency == TransparencyMode::SortedObjects || options_.transparency == TransparencyMode::SortedTriangles;
-    return !options_.floatTarget && options_.output == OutputMode::Shaded && !ownPixelsOnly_ && sorted;
+    return !options_.floatTarget && options_.output == OutputMode::Shaded && !ownPixelsOnly_ && isSorted(options_.transparency);
 }
 
+// The lighting shader applies the fog (FOG_IN_SHADING) where no resolve pass will.
+bool Renderer::fogInShading() const { return shadesIntoSrgb() && scene_.fog.enabled; }
+
 std::vector<std::string> Renderer::withFogDefine(std::vector<std::string> layout) const {
-    if (shadesIntoSrgb() && scene_.fog.enabled) layout.emplace_back("FOG_IN_SHADING");
+    if (fogInShading()) layout.emplace_back("FOG_IN_SHADING");
     return layout;
 }
 

@@ -189,6 +189,7 @@ private:
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
     void setFogUniforms(const gl::Program& program, const scene::Camera& camera, float aspect) const;
     bool shadesIntoSrgb() const;
+    bool fogInShading() const;
     // `layout` and FOG_IN_SHADING where the lighting shader applies the fog (shadesIntoSrgb).
     std::vector<std::string> withFogDefine(std::vector<std::string> layout) const;
     void drawOverlay(GLuint target, int width, int height);

@@ -31,6 +31,9 @@ inline gl::BlendState overTransmittance() {
 
 enum class TransparencyMode { SortedObjects, SortedTriangles, DepthPeeling, DualDepthPeeling, WeightedBlended, Stochastic };
 const char* toString(TransparencyMode mode);
+// Painter's order: the renderer draws the translucent surfaces back to front itself, blended over
+// its own colour target; the other modes composite passes of their own onto the float target.
+inline bool isSorted(TransparencyMode m) { return m == TransparencyMode::SortedObjects || m == TransparencyMode::SortedTriangles; }
 
 class OrderIndependentTransparency {
 public:
