@@ -19,9 +19,11 @@ layout(binding = kUnitProjector) uniform sampler2D uProjectorImage[kMaxProjector
 uniform vec3 uCameraPos;
 uniform vec3 uAmbient;
 uniform int uTranslucentPass;  // 1: dual-source output of transmittance for blending
+#ifdef DEBUG_OUTPUT  // a debug channel's build (Renderer::withOutputDefines); shaded builds hold none of it
 uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal,
                                // 4 unshadowed light from uDebugLight, 5 ambient term
 uniform int uDebugLight;
+#endif
 
 // Translucent output, chosen by the renderer's transparency mode (Mátl 2013 ch. 3):
 //   default: dual-source blending dst * transmit + src (painter's order)
@@ -96,7 +98,7 @@ vec3 incidentRadiance(int i, vec3 P, out vec3 L) {
 // The light sums of one surface point, built light by light.
 struct LightSum {
     vec3 diffuse, specular;
-    vec3 debugVisibility, debugContribution;  // of uDebugLight
+    vec3 debugVisibility, debugContribution;  // of uDebugLight (DEBUG_OUTPUT builds)
 };
 
 void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
@@ -104,11 +106,15 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
     vec3 radiance = incidentRadiance(i, P, L);
     float NdotL = dot(N, L);
     vec3 visibility = shadowVisibility(i, P, N, NdotL);
+#ifdef DEBUG_OUTPUT
     if (i == uDebugLight) sum.debugVisibility = visibility;
+#endif
     if (NdotL <= 0.0) return;
     vec3 H = normalize(L + V);
+#ifdef DEBUG_OUTPUT
     vec3 unshadowed = (albedo * NdotL + uSpecular * pow(max(dot(N, H), 0.0), uShininess)) * radiance;
     if (i == uDebugLight) sum.debugContribution = unshadowed;
+#endif
     sum.diffuse += albedo * NdotL * radiance * visibility;
     sum.specular += uSpecular * pow(max(dot(N, H), 0.0), uShininess) * radiance * visibility;
 }
@@ -156,15 +162,14 @@ void main() {
     SHADE_EACH_LIGHT
 #undef SHADE_LIGHT
     vec3 diffuse = sum.diffuse, specular = sum.specular;
-    vec3 debugVisibility = sum.debugVisibility, debugContribution = sum.debugContribution;
-
-    if (uOutputMode == 1) { outColor = vec4(debugVisibility, 1.0); outTransmit = vec4(0.0); return; }
+    vec3 ambient = uAmbient * albedo;
+#ifdef DEBUG_OUTPUT
+    if (uOutputMode == 1) { outColor = vec4(sum.debugVisibility, 1.0); outTransmit = vec4(0.0); return; }
     if (uOutputMode == 2) { outColor = vec4(P, 1.0); outTransmit = vec4(0.0); return; }
     if (uOutputMode == 3) { outColor = vec4(N, 1.0); outTransmit = vec4(0.0); return; }
-    if (uOutputMode == 4) { outColor = vec4(debugContribution, 1.0); outTransmit = vec4(0.0); return; }
-
-    vec3 ambient = uAmbient * albedo;
+    if (uOutputMode == 4) { outColor = vec4(sum.debugContribution, 1.0); outTransmit = vec4(0.0); return; }
     if (uOutputMode == 5) { outColor = vec4(ambient, 1.0); outTransmit = vec4(0.0); return; }
+#endif
     // Opaque builds are never drawn in the translucent pass: what follows the block is dead code to
     // them (llvmpipe would run it for every fragment, masked, behind a uniform test).
 #ifdef MATERIAL_TRANSLUCENT

@@ -93,7 +93,7 @@ Renderer::Renderer(scene::Scene& scene, RenderOptions options)
     options_.technique = chosenTechnique(options_, scene_);
     technique_ = shadows::createTechnique(options_.technique);
     configure(*technique_, options_);
-    lightLayout_ = withFogDefine(initialLightLayout(scene_.lights, anyTranslucentCaster(gpu_.draws(0.0f, scene_.camera.position))));
+    lightLayout_ = withOutputDefines(initialLightLayout(scene_.lights, anyTranslucentCaster(gpu_.draws(0.0f, scene_.camera.position))));
     lightingDefines_ = lightingDefines(*technique_);
     lighting_ = buildLighting(*technique_, lightingDefines_);
     PassPrograms passes = buildPassPrograms();
@@ -218,7 +218,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
     // A material made translucent at run time rebuilds the programs once (useLightLayout).
     const bool translucentCasters = anyTranslucentCaster(draws);
-    useLightLayout(withFogDefine(lightLayoutDefines(block, slots_.sun, translucentCasters)));
+    useLightLayout(withOutputDefines(lightLayoutDefines(block, slots_.sun, translucentCasters)));
 
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
@@ -843,8 +843,13 @@ bool Renderer::shadesIntoSrgb() const {
 // The lighting shader applies the fog (FOG_IN_SHADING) where no resolve pass will.
 bool Renderer::fogInShading() const { return shadesIntoSrgb() && scene_.fog.enabled; }
 
-std::vector<std::string> Renderer::withFogDefine(std::vector<std::string> layout) const {
+// FOG_IN_SHADING where the lighting shader applies the fog, DEBUG_OUTPUT where it writes a debug
+// channel instead of the shaded colour. Shaded builds hold no debug code: llvmpipe ran the
+// channels' uniform tests and their per-light bookkeeping for every fragment (measured, default
+// scene, none and hard: 1.5-2.5 ms of a 40-60 ms opaque pass; 98k grid, none: 0.8 of 31 ms).
+std::vector<std::string> Renderer::withOutputDefines(std::vector<std::string> layout) const {
     if (fogInShading()) layout.emplace_back("FOG_IN_SHADING");
+    if (options_.output != OutputMode::Shaded) layout.emplace_back("DEBUG_OUTPUT");
     return layout;
 }
 

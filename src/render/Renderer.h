@@ -190,8 +190,9 @@ private:
     void setFogUniforms(const gl::Program& program, const scene::Camera& camera, float aspect) const;
     bool shadesIntoSrgb() const;
     bool fogInShading() const;
-    // `layout` and FOG_IN_SHADING where the lighting shader applies the fog (shadesIntoSrgb).
-    std::vector<std::string> withFogDefine(std::vector<std::string> layout) const;
+    // `layout` and the output's defines: FOG_IN_SHADING where the lighting shader applies the fog
+    // (shadesIntoSrgb), DEBUG_OUTPUT for a debug channel.
+    std::vector<std::string> withOutputDefines(std::vector<std::string> layout) const;
     void drawOverlay(GLuint target, int width, int height);
     void releaseBoundTextures();
 

@@ -118,6 +118,32 @@ TEST(LightLayout, LightsEditedBetweenFramesRebuildTheLighting) {
     EXPECT_EQ(visibility(1), std::pair(0.0f, 1.0f)) << "the spot turned into a point light (a cube map)";
 }
 
+// Shaded builds of the lighting program hold no debug channel (DEBUG_OUTPUT): a channel chosen
+// between frames must rebuild them and show what it names, and going back to the shaded frame
+// must give its pixels again, bit for bit.
+TEST(LightLayout, ADebugChannelChosenBetweenFramesIsShownAndLeftAgain) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 6, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "ambient": [0.25, 0.5, 1.0],
+      "lights": [ { "type": "directional", "direction": [0.3, -1, 0.2] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20], "material": { "diffuse": [0.8, 0.4, 0.2] } } ] })");
+    render::Renderer renderer(s, {});
+    render::OffscreenTarget target(32, 32);
+    auto frame = [&](OutputMode mode) {
+        renderer.setOutputMode(mode, 0);
+        renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+        return Frame{32, 32, renderer.readLinear()};
+    };
+    const Frame shaded = frame(OutputMode::Shaded);
+    const glm::vec3 ambient = frame(OutputMode::Ambient).at(16, 16), normal = frame(OutputMode::Normal).at(16, 16);
+    EXPECT_NEAR(ambient.r, 0.2f, 1e-5f);  // ambient x diffuse
+    EXPECT_NEAR(ambient.g, 0.2f, 1e-5f);
+    EXPECT_NEAR(ambient.b, 0.2f, 1e-5f);
+    EXPECT_NEAR(normal.g, 1.0f, 1e-5f) << "the ground's normal";
+    EXPECT_GT(shaded.at(16, 16).r, ambient.r + 0.1f) << "the sun lights the ground in the shaded frame";
+    EXPECT_EQ(frame(OutputMode::Shaded).rgba, shaded.rgba);
+}
+
 // A program for a scene without translucent casters leaves the tint lookups out
 // (SCENE_TRANSLUCENT_CASTERS 0): a slab made green glass between frames must rebuild it and tint
 // its shadow, t² = (0.01, 0.81, 0.01) through the slab's two faces, and turn it back to a black
