@@ -5,15 +5,11 @@
 //   kRandomSinFract: the classic fract(sin(dot(p, k)) * 43758.5453): cheap, but float precision makes it
 //      repeat and band for large arguments
 #include "src/gpu/ShaderContract.h"
+#include "hash.glsl"
 
 uniform int uRandomGenerator;  // kRandom*
 uniform int uFrameSeed;  // frame counter (non-negative)
 
-uint pcgHash(uint v) {
-    uint state = v * 747796405u + 2891336453u;
-    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
 
 // Uniform in [0, 1), `stream` selects an independent sequence (e.g. one per colour channel).
 float fragmentRandom(uint stream) {

@@ -244,6 +244,23 @@ TEST_P(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheLightTheyStop) {
 
 INSTANTIATE_TEST_SUITE_P(TintMaps, TexturedTranslucentCasters, ::testing::Values("hard", "cascaded", "vsm", "cssm2"));
 
+// The same through CSSM's own colour map: with tint_behind_all off, the ground reads the
+// stochastic layers the casters drew (ColoredStochasticShadowMap::buildCasters' textured build),
+// not the tint map's product.
+TEST(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheStochasticLayers) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+        { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "left_half_cut.png" } } ] })");
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, "cssm2", {{"tint_behind_all", "false"}});
+    // The box filter's 8 x 8 tiles soften the stripes (0.94 and 0.07 here; a build that ignored
+    // the texture drew every texel as kept: 0 under the whole plate).
+    EXPECT_NEAR(f.at(30, 54).r, 1.0f, 0.1f) << "under a cut texel";
+    EXPECT_NEAR(f.at(30, 50).r, 0.08f, 0.1f) << "under a kept texel";
+    EXPECT_NEAR(f.at(70, 48).r, 1.0f, 0.05f) << "open ground";
+}
+
 // The depth pre-pass (RenderOptions::depthPrepass) shades each visible pixel once and must
 // change no pixel: overdraw (a sphere behind a box), a plate whose every texel is alpha-tested
 // away in front of both (the pre-pass must leave its holes too), a green pane (translucent pass

@@ -29,12 +29,17 @@ ColoredStochasticShadowMap::ColoredStochasticShadowMap(Variant variant)
 // drew all four ξ, stratified and white alike, for every fragment. Measured on the glass scene,
 // where the flying ball's texels are redrawn every frame (three alternated rounds): cssm2's shadow
 // pass 4.7-5.2 -> 2.9-3.8 ms, 10.0-12.6 -> 6.0-8.4 ms with its spot made a point light; pictures
-// byte-identical. Rebuilt when the `xi` parameter changes.
+// byte-identical. Rebuilt when the `xi` parameter changes. Untextured materials without an alpha
+// test get a build that samples no texture (see DrawPrograms; glass scene, the moving ball's redo:
+// ~0.2 ms per caster draw of ~2.3).
 void ColoredStochasticShadowMap::buildCasters() {
-    casters_ = gl::Program::build({.vertex = "src/shadows/common/glsl/caster.vert",
+    const gl::ProgramDesc textured{.vertex = "src/shadows/common/glsl/caster.vert",
                                    .fragment = "src/shadows/cssm/caster.frag",
                                    .defines = {std::string("CSSM_INDEPENDENT_CHANNELS ") + (variant_ == Variant::PerChannel ? "1" : "0"),
-                                               "CSSM_XI " + std::to_string(xi_)}});
+                                               "CSSM_XI " + std::to_string(xi_), "CASTER_OBJECT_HASH"}};
+    gl::ProgramDesc plain = textured;
+    plain.defines.insert(plain.defines.end(), {"MATERIAL_UNTEXTURED 1", "MATERIAL_NO_ALPHA_TEST 1"});
+    casters_.emplace(plain, textured, /*coverageFromTexture=*/true);
     castersXi_ = xi_;
 }
 
@@ -184,10 +189,10 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
     depth_.render(frame);  // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance)
     gl::DebugGroup group(name().c_str());
     if (castersXi_ != xi_) buildCasters();
-    casters_.set("uRandomGenerator", generator_);
+    casters_->set("uRandomGenerator", generator_);
     // The dither period matches the tile: log2 of its side.
-    casters_.set("uDitherBits", tileLevel(tileSide()));
-    casters_.set("uFrameSeed", static_cast<int>(frame.frameIndex));
+    casters_->set("uDitherBits", tileLevel(tileSide()));
+    casters_->set("uFrameSeed", static_cast<int>(frame.frameIndex));
     // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
     // depth (tested, not written), MIN-blended per channel.
     const gl::PassState copyPass = gl::PassState::fullscreen();
@@ -198,12 +203,14 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
         ensure(i, depth_.maps(i));
         LightMap& m = maps_[i];
         const LightSpace& ls = (*frame.lightSpaces)[i];
-        for (const gl::Program* p : {&copy_, &casters_}) {
-            p->set("uPerspective", ls.perspective ? 1 : 0);
-            p->set("uNear", ls.near);
-            p->set("uFar", ls.far);
-        }
-        casters_.set("uTestOffset", DepthAndTintMaps::translucentTestOffset((*frame.lights)[i]));
+        const auto setDepthRange = [&](const auto& p) {
+            p.set("uPerspective", ls.perspective ? 1 : 0);
+            p.set("uNear", ls.near);
+            p.set("uFar", ls.far);
+        };
+        setDepthRange(copy_);
+        setDepthRange(*casters_);
+        casters_->set("uTestOffset", DepthAndTintMaps::translucentTestOffset((*frame.lights)[i]));
         for (std::size_t f = 0; f < m.targets.size(); ++f) {
             // Drawn with the same key last frame: the colour map and its tiles are as drawn except
             // where animated casters were or are (DepthAndTintMaps::translucentRedo).
@@ -236,7 +243,7 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
             if (!casters.empty()) {
                 const ScopedScissor scissor(redo, kept);
                 const gl::ScopedPassState state(casterPass);
-                frame.drawCasters(casters_, translucent);
+                frame.drawCasters(*casters_, translucent);
             }
             if (m.tileSide > 0) renderTiles(m, f, kept ? redo : rect, !kept);
         }

@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+
 namespace penumbra::shadows {
 
 // Colored Stochastic Shadow Maps (McGuire & Enderton 2011; Mátl 2013 ch. 4-5). Per light: the
@@ -91,7 +93,8 @@ private:
     // opaque receiver is behind every layer around it (lookup.glsl, colouredByTint).
     DepthAndTintMaps depth_{/*withTint=*/false, DepthAndTintMaps::TintAlpha::FarthestAround};
     std::vector<LightMap> maps_;
-    gl::Program copy_, casters_, tiles_, nearestLayer_;
+    gl::Program copy_, tiles_, nearestLayer_;
+    std::optional<CasterProgramPair> casters_;  // buildCasters
     int castersXi_ = -1;  // the ξ kind casters_ was built with (-1: not built)
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;

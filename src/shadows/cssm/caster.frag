@@ -20,7 +20,7 @@ uniform float uNear, uFar;
 // every fragment if these were uniforms.
 const bool kIndependentChannels = CSSM_INDEPENDENT_CHANNELS != 0;  // false: one ξ for all channels (CSSM2); true: one per channel (CSSM1)
 const int kXi = CSSM_XI;  // kXi*
-uniform mat4 uModel;   // the caster's placement (caster.vert): tells objects apart, in any draw order
+flat in uint vObject;  // a hash of the caster's placement (caster.vert): tells objects apart, in any draw order
 layout(location = 0) out vec4 outDepth;
 
 float linearDepth(float z) { return uPerspective == 0 ? z : perspectiveLinearDepth(z, uNear, uFar); }
@@ -54,9 +54,7 @@ uint permuteInTile(uint index, uint key, uint bits) {
 float stratifiedXi(uint stream) {
     uvec2 p = uvec2(gl_FragCoord.xy);
     uint bits = uint(uDitherBits), side = 1u << bits;
-    uvec4 placement = floatBitsToUint(uModel[3]) ^ floatBitsToUint(uModel[0]) ^ floatBitsToUint(uModel[1]);
-    uint object = pcgHash(placement.x ^ pcgHash(placement.y ^ pcgHash(placement.z ^ pcgHash(floatBitsToUint(uModel[2].x)))));
-    uint layer = object ^ pcgHash(uint(gl_PrimitiveID) * 2u + (gl_FrontFacing ? 1u : 0u));
+    uint layer = vObject ^ pcgHash(uint(gl_PrimitiveID) * 2u + (gl_FrontFacing ? 1u : 0u));
     uvec2 tile = p >> bits, inTile = p & (side - 1u);
     uint seed = pcgHash(tile.x ^ pcgHash(tile.y ^ pcgHash(layer ^ pcgHash(stream))));
     uint stratum = permuteInTile(inTile.y * side + inTile.x, seed, bits);

@@ -16,9 +16,20 @@ uniform mat4 uLightViewProj;
 uniform vec4 uClipPlane = vec4(0.0, 0.0, 0.0, 1.0);
 
 out vec2 vUv;
+#ifdef CASTER_OBJECT_HASH
+// A hash of the caster's placement, the same for every vertex of a draw: CSSM's stratified ξ
+// (cssm/caster.frag) keys its layers by it. Hashed here, once per vertex, rather than in every
+// fragment (measured, glass scene: the four hashes were ~1/4 of the ξ's cost).
+#include "shaders/common/hash.glsl"
+flat out uint vObject;
+#endif
 
 void main() {
     vUv = aUv;
+#ifdef CASTER_OBJECT_HASH
+    uvec4 placement = floatBitsToUint(uModel[3]) ^ floatBitsToUint(uModel[0]) ^ floatBitsToUint(uModel[1]);
+    vObject = pcgHash(placement.x ^ pcgHash(placement.y ^ pcgHash(placement.z ^ pcgHash(floatBitsToUint(uModel[2].x)))));
+#endif
     vec4 world = uModel * vec4(aPosition, 1.0);
     gl_ClipDistance[0] = dot(uClipPlane, world);
     gl_Position = uLightViewProj * world;
