@@ -48,7 +48,7 @@ ShadowCoord shadowCoord(int light, vec3 P, vec3 N, float NdotL) {
         return sc;
     }
     vec4 s = L.shadowMatrix * vec4(Po, 1.0);
-    sc.uv = s.xyz / s.w;
+    sc.uv = lightPerspective(light) ? s.xyz / s.w : s.xyz;
     if (lightPerspective(light)) {
         float d = max(lightViewDepth(light, Po), 1e-4);
         sc.depth = sc.uv.z - worldBias * f * n / ((f - n) * d * d);
