@@ -38,8 +38,7 @@ float momentShadowIntensity(vec4 b, float zf) {
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     // Sample before any branch: mipmapped lookups need derivatives from uniform control flow.
-    vec3 dirDx = dFdx(s.coord), dirDy = dFdy(s.coord);
-    vec4 m = s.cube ? shadowRawCube(s.slot, s.coord, dirDx, dirDy) : shadowRaw2D(s.slot, s.coord.xy, s.uvDx, s.uvDy);
+    vec4 m = s.cube ? shadowRawFilteredCube(s.slot, s.coord) : shadowRawFiltered2D(s.slot, s.coord.xy);
     if (!s.inside) return vec3(1.0);
     float t = linearShadowDepth(light, s.depth);
     float x = 2.0 * t - 1.0;

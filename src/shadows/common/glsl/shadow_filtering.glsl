@@ -16,7 +16,6 @@ struct ShadowSite {
     float texelWorld;         // world size of one texel at the receiver
     float resolution;         // texels across the map
     vec2 depthSlope;          // receiver-plane depth change per texel (2D, Isidoro 2006)
-    vec2 uvDx, uvDy;          // screen-space derivatives of the 2D coordinates (for mipmapped moments)
     // Cube maps: the receiver's plane (through the lookup point, relative to the light) and the
     // bias already subtracted from `depth`, for per-tap receiver-plane depths.
     vec3 planePoint, planeNormal;
@@ -47,8 +46,6 @@ ShadowSite shadowSite(int light, vec3 P, vec3 N, float NdotL) {
     s.bitangent = normalize(cross(dir, s.tangent)) * cubeTexel;
     // Receiver-plane depth bias: depth as a linear function of (u, v) across the pixel.
     vec3 dx = dFdx(vec3(sc.uv.xy, sc.depth)), dy = dFdy(vec3(sc.uv.xy, sc.depth));
-    s.uvDx = dx.xy;
-    s.uvDy = dy.xy;
     mat2 J = mat2(dx.x, dy.x, dx.y, dy.y);  // rows: d(uv)/dx, d(uv)/dy
     float det = determinant(J);
     vec2 slopeUv = abs(det) > 1e-12 ? inverse(J) * vec2(dx.z, dy.z) : vec2(0.0);

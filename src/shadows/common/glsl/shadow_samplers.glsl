@@ -77,6 +77,20 @@ vec4 shadowRawCube(int slot, vec3 dir, vec3 dx, vec3 dy) {
     SLOT_SWITCH_2(S)
 #undef S
 }
+// Filtered (mipmapped, anisotropic) with the implicit derivatives of `uv` (`dir`): call from uniform
+// control flow only. llvmpipe takes textureGrad's explicit gradients on a far slower path, a level
+// of detail per pixel instead of per 2 x 2 quad: the moment lookups' opaque pass was 10-12 ms
+// dearer that way (default scene, vsm 70 -> 59 ms, msm 76 -> 64; lighting.frag's projectorTexel).
+vec4 shadowRawFiltered2D(int slot, vec2 uv) {
+#define S(i) texture(uShadowRaw[i], uv)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowRawFilteredCube(int slot, vec3 dir) {
+#define S(i) texture(uShadowRawCube[i], dir)
+    SLOT_SWITCH_2(S)
+#undef S
+}
 // One texel of a raw map's mip level `lod` (2D), and the texel a direction selects in a level (cube).
 vec4 shadowRawFetch2D(int slot, ivec2 texel, int lod) {
 #define S(i) texelFetch(uShadowRaw[i], texel, lod)
