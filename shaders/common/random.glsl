@@ -10,7 +10,6 @@
 uniform int uRandomGenerator;  // kRandom*
 uniform int uFrameSeed;  // frame counter (non-negative)
 
-
 // Uniform in [0, 1), `stream` selects an independent sequence (e.g. one per colour channel).
 float fragmentRandom(uint stream) {
     uvec3 p = uvec3(gl_FragCoord.xy, floatBitsToUint(gl_FragCoord.z));

@@ -846,7 +846,7 @@ bool Renderer::fogInShading() const { return shadesIntoSrgb() && scene_.fog.enab
 // FOG_IN_SHADING where the lighting shader applies the fog, DEBUG_OUTPUT where it writes a debug
 // channel instead of the shaded colour. Shaded builds hold no debug code: llvmpipe ran the
 // channels' uniform tests and their per-light bookkeeping for every fragment (measured, default
-// scene, none and hard: 1.5-2.5 ms of a 40-60 ms opaque pass; 98k grid, none: 0.8 of 31 ms).
+// scene, none, hard and cssm2: about 1-2 ms of a 40-60 ms opaque pass; 98k grid, none: 0.8 of 31 ms).
 std::vector<std::string> Renderer::withOutputDefines(std::vector<std::string> layout) const {
     if (fogInShading()) layout.emplace_back("FOG_IN_SHADING");
     if (options_.output != OutputMode::Shaded) layout.emplace_back("DEBUG_OUTPUT");
