@@ -228,37 +228,31 @@ TEST(AlphaTestedSurfaces, TheCameraSeesThroughTheirHoles) {
 // left_half_cut.png's columns make stripes along z, which the sun (along +x) casts unchanged.
 class TexturedTranslucentCasters : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheLightTheyStop) {
+// The plate's stripes on the ground, the sun's visibility as `technique` draws it. Ground x = -2
+// is pixel 30; z = -0.76 is pixel 54 (u = 0.24, a cut texel), z = -0.29 pixel 50 (u = 0.71,
+// bilinearly 0.92 of a kept texel: 0.08 of the light passes); pixel 70 is open ground.
+void expectPlateStripes(const std::string& technique, float tolerance, const shadows::ParameterValues& parameters = {}) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
       "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
       "objects": [ { "shape": "plane", "size": [20, 20] },
         { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "left_half_cut.png" } } ] })");
-    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, GetParam());
-    // Ground x = -2 is pixel 30; z = -0.76 is pixel 54 (u = 0.24, a cut texel), z = -0.29 pixel 50
-    // (u = 0.71, bilinearly 0.92 of a kept texel: 0.08 of the light passes).
-    EXPECT_NEAR(f.at(30, 54).r, 1.0f, 0.05f) << "under a cut texel";
-    EXPECT_NEAR(f.at(30, 50).r, 0.08f, 0.05f) << "under a kept texel";
+    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, technique, parameters);
+    EXPECT_NEAR(f.at(30, 54).r, 1.0f, tolerance) << "under a cut texel";
+    EXPECT_NEAR(f.at(30, 50).r, 0.08f, tolerance) << "under a kept texel";
     EXPECT_NEAR(f.at(70, 48).r, 1.0f, 0.05f) << "open ground";
 }
+
+TEST_P(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheLightTheyStop) { expectPlateStripes(GetParam(), 0.05f); }
 
 INSTANTIATE_TEST_SUITE_P(TintMaps, TexturedTranslucentCasters, ::testing::Values("hard", "cascaded", "vsm", "cssm2"));
 
 // The same through CSSM's own colour map: with tint_behind_all off, the ground reads the
 // stochastic layers the casters drew (ColoredStochasticShadowMap::buildCasters' textured build),
-// not the tint map's product.
+// not the tint map's product. The box filter's 8 x 8 tiles soften the stripes (0.94 and 0.07; a
+// build that ignored the texture drew every texel as kept: 0 under the whole plate).
 TEST(TexturedTranslucentCasters, TheirTextureAlphaWeighsTheStochasticLayers) {
-    scene::Scene s = sceneFromJson(R"({
-      "camera": { "position": [0, 12, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 50 },
-      "lights": [ { "type": "directional", "direction": [1, -1, 0] } ],
-      "objects": [ { "shape": "plane", "size": [20, 20] },
-        { "shape": "plane", "size": [2, 2], "position": [-4, 2, 0], "material": { "texture": "left_half_cut.png" } } ] })");
-    const Frame f = renderChannel(s, OutputMode::Visibility, 0, 96, 96, "cssm2", {{"tint_behind_all", "false"}});
-    // The box filter's 8 x 8 tiles soften the stripes (0.94 and 0.07 here; a build that ignored
-    // the texture drew every texel as kept: 0 under the whole plate).
-    EXPECT_NEAR(f.at(30, 54).r, 1.0f, 0.1f) << "under a cut texel";
-    EXPECT_NEAR(f.at(30, 50).r, 0.08f, 0.1f) << "under a kept texel";
-    EXPECT_NEAR(f.at(70, 48).r, 1.0f, 0.05f) << "open ground";
+    expectPlateStripes("cssm2", 0.1f, {{"tint_behind_all", "false"}});
 }
 
 // The depth pre-pass (RenderOptions::depthPrepass) shades each visible pixel once and must
