@@ -107,6 +107,12 @@ struct LightSum {
 };
 
 void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
+#ifdef SKIPPED_LIGHTS
+    // A light that reaches none of the pixels this build shades (a projector or spot light whose
+    // frustum misses them: Renderer's light reach) would add exactly 0 there; left out, with its
+    // picture and shadow lookup, which llvmpipe would otherwise run for every pixel.
+    if (((SKIPPED_LIGHTS >> uint(i)) & 1u) != 0u) return;
+#endif
     vec3 L;
     vec3 radiance = incidentRadiance(i, P, L);
     float NdotL = dot(N, L);

@@ -26,8 +26,9 @@ namespace penumbra::app {
 // How the frame's opaque draws met coloured shadows (render/TintReach.h): drawn with the whole
 // lookup, with none (no translucent caster's shadow reaches them), with the behind-layers build
 // (behind every layer that may reach them), or split on the screen; and how many translucent draws
-// met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split; and the CPU
-// milliseconds the choice took.
+// met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split; how many pieces
+// of draws left out a projector or spot light that cannot reach them (RenderOptions::
+// lightOnlyWhereReached); and the CPU milliseconds the choice took.
 static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
     return {{"whole_draws", t.whole},
             {"untinted_draws", t.untinted},
@@ -39,6 +40,7 @@ static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
             {"translucent_untinted_draws", t.translucentUntinted},
             {"translucent_behind_layers_draws", t.translucentBehindLayers},
             {"translucent_split_draws", t.translucentSplit},
+            {"unlit_pieces", t.unlitPieces},
             {"cpu_ms", t.cpuMs}};
 }
 

@@ -35,6 +35,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
         "--tint-everywhere", [&options] { options.tintOnlyWhereReached = false; },
         "shade every opaque receiver with the whole coloured-shadow lookup (default: where no translucent caster's "
         "shadow can reach, a program that reads no tint; the same pixels)");
+    command.add_flag_callback(
+        "--light-everywhere", [&options] { options.lightOnlyWhereReached = false; },
+        "shade every light on every pixel (default: where a projector or spot light's frustum cannot reach, a program "
+        "that leaves that light out; the same pixels)");
     options.floatTarget = false;  // the front-ends' default: straight into 8-bit sRGB where the frame allows
     command.add_flag("--float-target", options.floatTarget,
                      "shade into a 32-bit float target and resolve it (fog, sRGB) in a pass of its own (default: straight "

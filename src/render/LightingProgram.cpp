@@ -33,9 +33,10 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
     of(first);
 }
 
-const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint) {
+const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint, unsigned unlit) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    gl::Program& build = builds_[(untextured ? 1 : 0) + (translucent ? 2 : 0) + (alphaTested ? 4 : 0) + 8 * static_cast<int>(tint)];
+    gl::Program& build =
+        builds_[(untextured ? 1u : 0u) + (translucent ? 2u : 0u) + (alphaTested ? 4u : 0u) + 8u * static_cast<unsigned>(tint) + 24u * unlit];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;
         if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
@@ -43,6 +44,7 @@ const gl::Program& LightingPrograms::of(const scene::Material& material, bool tr
         if (!alphaTested) defines.emplace_back("MATERIAL_NO_ALPHA_TEST 1");
         if (tint == TintLookup::Untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
         if (tint == TintLookup::BehindLayers) defines.emplace_back("RECEIVER_BEHIND_LAYERS 1");
+        if (unlit != 0) defines.emplace_back("SKIPPED_LIGHTS " + std::to_string(unlit) + "u");
         build = buildLightingProgram(lookup_, defines);
     }
     return build;

@@ -8,6 +8,7 @@
 #include "scene/Material.h"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -48,18 +49,22 @@ public:
     LightingPrograms() = default;
     LightingPrograms(std::filesystem::path lookup, std::vector<std::string> defines, bool anyTexturedMaterial);
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
-    // `tint`: what the pixels it shades need of the coloured shadows.
-    const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole);
+    // `tint`: what the pixels it shades need of the coloured shadows. `unlit`: a bit per light
+    // that reaches none of the pixels shaded (SKIPPED_LIGHTS; Renderer's light reach): the build
+    // leaves those lights out.
+    const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole,
+                          unsigned unlit = 0);
     template <class F>
     void forEachBuilt(F&& f) const {
-        for (const gl::Program& p : builds_)
+        for (const auto& [key, p] : builds_)
             if (p.id()) f(p);
     }
 
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    gl::Program builds_[24];  // [untextured + 2 translucent + 4 alpha-tested + 8 TintLookup]
+    // Keyed by untextured + 2 translucent + 4 alpha-tested + 8 TintLookup + 24 unlit lights.
+    std::map<unsigned, gl::Program> builds_;
 };
 
 }  // namespace penumbra::render

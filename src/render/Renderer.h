@@ -84,6 +84,11 @@ struct RenderOptions {
     // (render/TintReach.h): the same pixels, less shading where colour cannot fall. false gives
     // every receiver the whole lookup (`--tint-everywhere`), for measuring what it saves.
     bool tintOnlyWhereReached = true;
+    // Shade the screen rectangles of a receiver's pixels that a projector or spot light cannot
+    // reach (outside its frustum: render/TintReach.h, lightReach) with a lighting program that
+    // leaves that light out: the same pixels, without its picture and shadow lookup there. false
+    // (`--light-everywhere`) shades every light everywhere, for measuring what it saves.
+    bool lightOnlyWhereReached = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
     // (render/SrgbTarget.h) wherever the frame allows it (shaded output, sorted transparency):
@@ -149,6 +154,7 @@ public:
         std::size_t whole = 0, untinted = 0, behindLayers = 0, split = 0, tintedRects = 0, untintedRects = 0, behindLayersRects = 0;
         std::size_t translucentUntinted = 0, translucentBehindLayers = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
         double cpuMs = 0.0;  // the footprints and rectangles' CPU time (render/TintReach.h)
+        std::size_t unlitPieces = 0;  // pieces drawn with a light left out (addLightReach), both passes
     };
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
@@ -167,16 +173,39 @@ private:
         std::array<std::vector<PixelRect>, 3> rects;
         bool split() const { return !rects[0].empty() || !rects[1].empty() || !rects[2].empty(); }
     };
+    // Where each light whose frustum bounds its light (a projector, a spot) reaches a draw's
+    // pixels (render/TintReach.h, lightReach): the light's bit and that rectangle of the draw's own.
+    struct LightReach {
+        unsigned bit = 0;
+        PixelRect rect;
+    };
+    struct DrawReach {
+        PixelRect own;                   // the draw's pixels
+        std::vector<LightReach> lights;  // the lights that miss some of them; empty: none left out
+    };
     struct TintSplit {
         std::vector<TintedPixels> draws;  // per draw; empty: every draw whole
         PixelRect area;                   // the camera passes' pixels
         bool scissored = false;           // a column range scissors them (render's `columns`)
+        std::vector<DrawReach> reach;     // per draw (addLightReach); empty: every light everywhere
+    };
+    // A rectangle of a draw's pixels, the lookup it needs and the lights that reach none of it.
+    struct Piece {
+        PixelRect rect;
+        TintLookup lookup = TintLookup::Whole;
+        unsigned unlit = 0;
     };
     // `area`: the pixels of the width x height frame the camera passes draw (a column range).
     TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
                           PixelRect area) const;
     TintShading tally(const TintSplit& split, const std::vector<Draw>& draws) const;
-    void drawSplit(const Draw& d, const TintedPixels& pixels, const TintSplit& split);
+    // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
+    void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
+                       int width, int height) const;
+    // The pieces a draw is drawn in: the tint split's rectangles, or its own, each cut by the
+    // lights' reach; empty where the draw is drawn whole with `lookup` and every light.
+    std::vector<Piece> piecesOf(const TintSplit* split, std::size_t draw) const;
+    void drawPieces(const Draw& d, const std::vector<Piece>& pieces, const TintSplit& split);
     void drawSurfaces(const std::vector<Draw>& draws, bool translucent, const scene::Camera& camera, float aspect,
                       const TintSplit* split = nullptr);
     void drawDepthFirst(const std::vector<Draw>& draws, const scene::Camera& camera, float aspect);

@@ -321,6 +321,24 @@ OrientedBox::OrientedBox(const scene::Bounds& local, const glm::mat4& model) : e
     for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = glm::vec3(model * glm::vec4(local.corner(i), 1.0f));
 }
 
+scene::Bounds lightReach(const gpu::LightData& light, const OrientedBox& receiver) {
+    const int type = static_cast<int>(light.colorType.w);
+    if (receiver.empty || (type != gpu::kLightProjector && type != gpu::kLightSpot)) {
+        scene::Bounds all;
+        if (!receiver.empty)
+            for (const glm::vec3& c : receiver.corners) all.add(c);
+        return all;
+    }
+    // s = shadowMatrix * (P, 1); lit only where 0 <= s.x <= s.w and 0 <= s.y <= s.w (which also
+    // puts P in front of the light, s.w >= 0): four half-spaces through the light's position.
+    const glm::mat4 m = glm::transpose(light.shadowMatrix);  // rows of the matrix as columns
+    const glm::vec4 u = m[0], v = m[1], w = m[3];
+    const auto plane = [](const glm::vec4& r) { return Plane{glm::vec3(r), r.w}; };
+    const std::array<Plane, 4> sides{plane(u), plane(w - u), plane(v), plane(w - v)};
+    const glm::vec3 apex(light.positionNear);
+    return insideAll(receiver, sides, &apex);
+}
+
 scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels) {
     return footprint(light, caster, receiver, padTexels);
 }

@@ -78,6 +78,12 @@ struct TintSides {
 TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
                              SideTolerance tolerance, bool notBehind, bool notInFront);
 
+// The part of `receiver` that light `light` can light at all: for a projector or a spot light the
+// part inside its frustum's four side planes (lighting.frag's incidentRadiance is exactly 0
+// outside them: a projector's picture stops at the frame's edge, a spot's cone lies inside its
+// square frustum); the whole box for other lights. Empty where the light reaches none of it.
+scene::Bounds lightReach(const gpu::LightData& light, const OrientedBox& receiver);
+
 // A pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
