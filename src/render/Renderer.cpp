@@ -442,6 +442,16 @@ static constexpr std::size_t kMostSplitDraws = 128;
 static constexpr double kLeastSwitchedShare = 0.03;
 static constexpr double kLeastSwitchedTranslucentShare = 0.005;
 
+// The pixels of `area` that draw `d` may cover, or none where they are under `leastShare` of the
+// width x height frame: a small receiver stays with one program. On llvmpipe each switch between
+// programs costs more than a few thousand pixels' lookups save (scenes/street.json, 190 draws:
+// hard's opaque pass 88 against 67-69 ms when every draw chose).
+static PixelRect switchedRect(const Draw& d, const glm::mat4& viewProj, int width, int height, const PixelRect& area, double leastShare) {
+    const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
+    const double ownArea = double(own.x1 - own.x0) * double(own.y1 - own.y0);
+    return own.empty() || ownArea < leastShare * double(width) * double(height) ? PixelRect{} : own;
+}
+
 namespace {
 
 // The grid the not-behind rectangles are grown to (pixels).
@@ -654,13 +664,10 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         const Draw& d = draws[i];
         if (!d.visible || !ownObject(d.object)) continue;  // another renderer shades it (RegionView)
         if (d.translucent && !(translucentReceivers && d.ownLayersKnown)) continue;
-        const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(area);
-        // A small receiver stays with the whole program: on llvmpipe each switch between the
-        // programs costs more than a few thousand pixels' lookups save (scenes/street.json, 190
-        // draws: hard's opaque pass 88 against 67-69 ms when every draw chose). A translucent
-        // receiver's whole lookup costs far more per pixel than an opaque one's.
-        const double ownArea = double(own.x1 - own.x0) * double(own.y1 - own.y0), frameArea = double(width) * double(height);
-        if (own.empty() || ownArea < (d.translucent ? kLeastSwitchedTranslucentShare : kLeastSwitchedShare) * frameArea) continue;
+        // A translucent receiver's whole lookup costs far more per pixel than an opaque one's.
+        const PixelRect own =
+            switchedRect(d, viewProj, width, height, area, d.translucent ? kLeastSwitchedTranslucentShare : kLeastSwitchedShare);
+        if (own.empty()) continue;
         // A translucent receiver's own layers are the lookup's to divide out: only the others count.
         std::vector<OrientedBox> others;
         if (d.translucent)
@@ -700,7 +707,7 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
             // Behind-layers rectangles covering little of the frame are not worth their draws and
             // program switches (scenes/street.json: 21 receivers split three ways, cssm2's opaque pass
             // 91 against 85-87 ms): those pixels keep the whole lookup.
-            if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * frameArea)
+            if (pixelsOf(t.rects[static_cast<int>(TintLookup::BehindLayers)]) < kLeastSwitchedShare * double(width) * double(height))
                 t.rects = rectsByLookup(own, f.tinted, f.tinted);
         }
         // All of one kind: the draw is not split after all.
@@ -739,7 +746,6 @@ Renderer::TintShading Renderer::tally(const TintSplit& split, const std::vector<
     return t;
 }
 
-// Each pixel in one rectangle, drawn with the lookup it needs.
 // Lights whose frustum bounds their light: a projector's picture stops at its frame, a spot's
 // cone lies inside its square frustum (lightReach). Elsewhere they add exactly 0, yet llvmpipe
 // runs their picture sample and shadow lookup, masked, for every pixel: measured on the default
@@ -754,16 +760,14 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
         if (type == gpu::kLightProjector || type == gpu::kLightSpot) bounded.push_back(l);
     }
     if (bounded.empty()) return;
-    const double frameArea = double(width) * double(height);
     split.reach.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (!d.visible || !ownObject(d.object)) continue;
         // Translucent pieces blend once per pixel only when each object is drawn whole in turn.
         if (d.translucent && options_.transparency != TransparencyMode::SortedObjects) continue;
-        const PixelRect own = screenRect(d.worldBounds, viewProj, width, height).intersected(split.area);
-        // As for the tint split: a small receiver is not worth its program switches.
-        if (own.empty() || double(own.x1 - own.x0) * double(own.y1 - own.y0) < kLeastSwitchedShare * frameArea) continue;
+        const PixelRect own = switchedRect(d, viewProj, width, height, split.area, kLeastSwitchedShare);
+        if (own.empty()) continue;
         const OrientedBox box(d.meshBounds, d.model);
         DrawReach& reach = split.reach[i];
         reach.own = own;
@@ -807,6 +811,7 @@ std::vector<Renderer::Piece> Renderer::piecesOf(const TintSplit* split, std::siz
     return pieces;
 }
 
+// Each pixel in one piece, drawn with the lookup it needs and without the lights that miss it.
 void Renderer::drawPieces(const Draw& d, const std::vector<Piece>& pieces, const TintSplit& split) {
     glEnable(GL_SCISSOR_TEST);
     for (const Piece& p : pieces) {
