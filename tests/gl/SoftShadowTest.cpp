@@ -31,7 +31,7 @@ const std::map<std::string, double> kMeasuredWrongPercent = {
     {"hard", 1.084},          {"pcf-grid", 1.019},      {"pcf-bilinear", 1.072},  {"pcf-gaussian", 1.019},
     {"pcf-poisson16", 1.046}, {"pcf-poisson20", 1.052}, {"pcf-poisson32", 1.026}, {"pcf-random30", 1.024},
     {"pcf-jitter", 1.008},    {"pcf-dither", 1.052},    {"pcf-rotated", 1.045},   {"pcf-adaptive", 1.026},
-    {"pcss", 0.696},          {"distance", 1.059},      {"vsm", 1.131},           {"esm", 1.598},
+    {"pcss", 0.550},          {"distance", 1.059},      {"vsm", 1.131},           {"esm", 1.598},
     {"evsm2", 1.054},         {"evsm4", 1.045},         {"msm", 1.064},           {"cssm1", 0.912},
     {"cssm2", 0.908},         {"cascaded", 1.084},      {"lispsm", 1.084},        {"lispsm-tiled", 1.084},
     {"psm", 1.084},           {"shadow-volumes", 1.088}, {"planar", 1.084},

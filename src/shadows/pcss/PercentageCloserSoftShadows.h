@@ -1,11 +1,11 @@
 #pragma once
 #include "shadows/common/KernelTechnique.h"
-#include "shadows/common/PoissonDisk.h"
 
 namespace penumbra::shadows {
 
 // Variable-size penumbra (Fernando 2005): blocker search, penumbra estimate, variable PCF.
-// Light size comes from the scene file (`size`), else from the parameters.
+// Light size comes from the scene file (`size`), else from the parameters. Both kernels are Vogel
+// spirals computed in the shader, so the tap counts are not bound to a table's size.
 class PercentageCloserSoftShadows final : public KernelTechnique {
 public:
     std::string name() const override { return "pcss"; }
@@ -16,9 +16,9 @@ protected:
     std::vector<Parameter> declareParameters() override;
 
 private:
+    static constexpr int kMaxTaps = 64;  // a cost bound only
     int blockerSamples_ = 16, filterTaps_ = 32;
     float lightSize_ = 0.3f, sunAngle_ = 2.0f, maxRadius_ = 48.0f;
-    PoissonDisk poisson_;
 };
 
 }  // namespace penumbra::shadows

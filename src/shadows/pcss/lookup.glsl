@@ -1,6 +1,7 @@
 // Percentage-closer soft shadows (Fernando 2005): search for blockers, estimate the penumbra by
 // similar triangles, w = (d_receiver - d_blocker) * w_light / d_blocker, then PCF that wide.
 // Directional lights have an angular size: w = (d_receiver - d_blocker) * 2 tan(θ/2).
+// Both kernels are Vogel spirals (kernels.glsl) turned per pixel, not the Poisson set.
 #include "src/shadows/common/glsl/kernels.glsl"
 #include "src/shadows/common/glsl/depth_tiles.glsl"
 
@@ -59,12 +60,14 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // Where the tile bounds show how the search and filter end (depth_tiles.glsl), both loops break
     // before their first tap.
     float agreed = searchOutcome(s, light, lightSize, receiver, texelScale, searchTexels);
-    mat2 rot = pixelRotation();
+    // Both spirals start from the same per-pixel direction.
+    vec2 start = pixelDirection();
+    SpiralDisk searchDisk = spiralDisk(start, searchTexels, uBlockerSamples);
     float blockerSum = 0.0;
     int blockers = 0;
     for (int i = 0; i < uBlockerSamples; ++i) {
         if (agreed >= 0.0) break;
-        float d = rawDepthAt(s, poissonTap(i, rot, searchTexels));
+        float d = rawDepthAt(s, nextSpiralTap(searchDisk, i));
         if (d < s.depth) {
             blockerSum += worldShadowDepth(light, d);
             ++blockers;
@@ -78,9 +81,10 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     float lit = 0.0;
     // The bounds again, over the filter the blockers found ask for: every tap may still agree.
     float filterAgreed = agreed >= 0.0 ? agreed : tapsAgree(s, radius, vec2(0.0));
+    SpiralDisk filterDisk = spiralDisk(start, radius, uFilterTaps);
     for (int i = 0; i < uFilterTaps; ++i) {
         if (filterAgreed >= 0.0) { lit = filterAgreed * float(uFilterTaps); break; }
-        lit += compareAt(s, poissonTap(i, rot, radius), 0.0);
+        lit += compareAt(s, nextSpiralTap(filterDisk, i), 0.0);
     }
     return lit / float(uFilterTaps) * tintAt(s);
 }
