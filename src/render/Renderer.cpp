@@ -441,6 +441,9 @@ static constexpr std::size_t kMostSplitDraws = 128;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
 static constexpr double kLeastSwitchedTranslucentShare = 0.005;
+// Cells across a cheap draw's box whose reach rectangles bound a projector's or spot's light
+// (addLightReach).
+static constexpr int kReachCells = 8;
 
 // The pixels of `area` that draw `d` may cover, or none where they are under `leastShare` of the
 // width x height frame: a small receiver stays with one program. On llvmpipe each switch between
@@ -768,13 +771,21 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
         if (d.translucent && options_.transparency != TransparencyMode::SortedObjects) continue;
         const PixelRect own = switchedRect(d, viewProj, width, height, split.area, kLeastSwitchedShare);
         if (own.empty()) continue;
+        // A draw cheap to repeat is bounded cell by cell: a floor's reach is the light's
+        // trapezoid on it, where its whole box gave the trapezoid's bounding rectangle.
         const OrientedBox box(d.meshBounds, d.model);
+        const std::vector<OrientedBox> cells = cellsOf(box, d.triangles <= kSplitTriangles ? kReachCells : 1);
         DrawReach& reach = split.reach[i];
         reach.own = own;
         for (int l : bounded) {
-            const scene::Bounds lit = lightReach(block.lights[l], box);
-            const PixelRect rect = lit.empty() ? PixelRect{} : screenRect(lit, viewProj, width, height).intersected(own);
-            if (!rect.contains(own)) reach.lights.push_back({1u << static_cast<unsigned>(l), rect});
+            std::vector<PixelRect> rects;
+            for (const OrientedBox& cell : cells) {
+                const scene::Bounds lit = lightReach(block.lights[l], cell);
+                const PixelRect rect = lit.empty() ? PixelRect{} : screenRect(lit, viewProj, width, height).intersected(own);
+                if (!rect.empty()) rects.push_back(rect);
+            }
+            if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // every pixel may be lit
+            reach.lights.push_back({1u << static_cast<unsigned>(l), std::move(rects)});
         }
     }
 }
@@ -796,13 +807,9 @@ std::vector<Renderer::Piece> Renderer::piecesOf(const TintSplit* split, std::siz
     for (const LightReach& light : reach->lights) {
         cut.clear();
         for (const Piece& p : pieces) {
-            const PixelRect lit = p.rect.intersected(light.rect);
-            if (lit.empty()) {
-                cut.push_back({p.rect, p.lookup, p.unlit | light.bit});
-                continue;
-            }
-            cut.push_back({lit, p.lookup, p.unlit});
-            for (const PixelRect& r : partition(p.rect, {lit}).outside) cut.push_back({r, p.lookup, p.unlit | light.bit});
+            const RectPartition byLight = partition(p.rect, light.rects);
+            for (const PixelRect& r : byLight.inside) cut.push_back({r, p.lookup, p.unlit});
+            for (const PixelRect& r : byLight.outside) cut.push_back({r, p.lookup, p.unlit | light.bit});
         }
         pieces.swap(cut);
     }

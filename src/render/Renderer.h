@@ -177,7 +177,7 @@ private:
     // pixels (render/TintReach.h, lightReach): the light's bit and that rectangle of the draw's own.
     struct LightReach {
         unsigned bit = 0;
-        PixelRect rect;
+        std::vector<PixelRect> rects;  // the light reaches no pixel of the draw outside these
     };
     struct DrawReach {
         PixelRect own;                   // the draw's pixels

@@ -28,9 +28,15 @@ struct OrientedBox {
     using Corners = std::array<glm::vec3, 8>;  // in scene::Bounds::corner's order
     OrientedBox(const scene::Bounds& world);   // NOLINT: a world box is an oriented box
     OrientedBox(const scene::Bounds& local, const glm::mat4& model);
+    explicit OrientedBox(const Corners& corners) : corners(corners), empty(false) {}
     Corners corners;
     bool empty = true;
 };
+
+// `box` cut into n x n cells across its two longest edges (whole along the shortest): a light's
+// reach or a footprint bounded cell by cell is tighter than the whole box's (a projector's
+// trapezoid on a floor, not its bounding rectangle).
+std::vector<OrientedBox> cellsOf(const OrientedBox& box, int n);
 
 // The part of `receiver` (a world box, or a turned pane's own box) that light `light` may tint
 // through a translucent caster inside `caster`: the world box of the receiver's points whose ray

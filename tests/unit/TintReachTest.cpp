@@ -279,6 +279,69 @@ TEST(TintReach, APaneAboveABlockIsInFrontOfItButTheGroundIsNotInFrontOfThePane) 
     }
 }
 
+// Where (u, v, w) in [0, 1]^3 of a parallelepiped (OrientedBox corners) lies: its corner 0 and edges.
+glm::vec3 boxCoordinates(const OrientedBox& b, glm::vec3 p) {
+    const glm::mat3 edges(b.corners[1] - b.corners[0], b.corners[2] - b.corners[0], b.corners[4] - b.corners[0]);
+    return glm::inverse(edges) * (p - b.corners[0]);
+}
+
+TEST(TintReach, CellsTileATurnedBoxAcrossItsTwoLongestEdges) {
+    const Caster slab = turned(box({-3.0f, -0.05f, -2.0f}, {3.0f, 0.05f, 2.0f}), 0.6f, {1, 2, 3});
+    const OrientedBox whole = slab.box();
+    const std::vector<OrientedBox> cells = cellsOf(whole, 4);
+    ASSERT_EQ(cells.size(), 16u);  // 4 x 4 across x and z, the 0.1 thick y uncut
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const glm::vec3 at(unit(rng), unit(rng), unit(rng));
+        const glm::vec3 p = glm::vec3(slab.model * glm::vec4(glm::mix(slab.local.min, slab.local.max, at), 1.0f));
+        int holding = 0;
+        for (const OrientedBox& c : cells) {
+            const glm::vec3 q = boxCoordinates(c, p);
+            holding += glm::all(glm::greaterThanEqual(q, glm::vec3(-1e-4f))) && glm::all(glm::lessThanEqual(q, glm::vec3(1.0f + 1e-4f)));
+        }
+        ASSERT_GE(holding, 1) << "a point of the box in no cell, trial " << trial;
+        ASSERT_LE(holding, 4) << "cells overlap beyond their shared faces, trial " << trial;
+    }
+    EXPECT_EQ(cellsOf(whole, 1).size(), 1u);
+}
+
+// A projector above a floor, looking down and ahead: its light on the floor is a trapezoid. Cell
+// by cell, the reach must still hold every lit floor point (else the renderer would shade lit
+// pixels with a build that leaves the light out), and far less of the floor than the whole box's.
+TEST(TintReach, AProjectorsReachCellByCellHoldsEveryLitPointOfAFloorAndLessBesides) {
+    gpu::LightData projector = perspective(gpu::kLightProjector, {0.0f, 2.4f, 7.5f}, 1e-3f);
+    const glm::mat4 toUnit = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f));
+    projector.shadowMatrix = toUnit * glm::perspective(glm::radians(28.0f), 1.0f, 0.05f, 25.0f) *
+                             glm::lookAt(glm::vec3(0.0f, 2.4f, 7.5f), glm::vec3(0.0f, 2.4f - 0.08f * 8.0f, -0.5f), glm::vec3(0, 1, 0));
+    const OrientedBox floor(box({-12.0f, -0.01f, -12.0f}, {12.0f, 0.0f, 12.0f}));
+    const scene::Bounds whole = lightReach(projector, floor);
+    std::vector<scene::Bounds> byCell;
+    float cellArea = 0.0f;
+    for (const OrientedBox& cell : cellsOf(floor, 8)) {
+        const scene::Bounds b = lightReach(projector, cell);
+        if (b.empty()) continue;
+        byCell.push_back(b);
+        cellArea += (b.max.x - b.min.x) * (b.max.z - b.min.z);
+    }
+    ASSERT_FALSE(whole.empty());
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> across(-12.0f, 12.0f);
+    int lit = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const glm::vec3 p(across(rng), 0.0f, across(rng));
+        const glm::vec4 s = projector.shadowMatrix * glm::vec4(p, 1.0f);
+        if (!(s.w > 0.0f && s.x >= 0.0f && s.x <= s.w && s.y >= 0.0f && s.y <= s.w)) continue;
+        ++lit;
+        ASSERT_TRUE(std::any_of(byCell.begin(), byCell.end(), [&](const scene::Bounds& b) { return inside(b, p); }))
+            << "lit floor point " << p.x << ", " << p.z << " in no cell's reach";
+    }
+    EXPECT_GT(lit, 500);
+    const float wholeArea = (whole.max.x - whole.min.x) * (whole.max.z - whole.min.z);
+    std::printf("projector on a floor: whole box's reach %.1f m^2, cells' %.1f m^2\n", wholeArea, cellArea);
+    EXPECT_LT(cellArea, 0.8f * wholeArea);  // measured 0.75: the 3 m cells round the trapezoid's slanted sides out
+}
+
 TEST(TintReach, APartitionCoversEveryPixelOnceOnTheRightSide) {
     const PixelRect area{10, 5, 90, 70};
     const std::vector<PixelRect> covered{{20, 10, 40, 30}, {30, 20, 60, 50}, {0, 60, 200, 200}, {85, 0, 95, 8}};
