@@ -441,9 +441,9 @@ static constexpr std::size_t kMostSplitDraws = 128;
 // Receivers covering less of the frame than this keep the whole lookup.
 static constexpr double kLeastSwitchedShare = 0.03;
 static constexpr double kLeastSwitchedTranslucentShare = 0.005;
-// Cells across a cheap draw's box whose reach rectangles bound a projector's or spot's light
-// (addLightReach).
-static constexpr int kReachCells = 8;
+// Levels of quarters (cellsOf) whose reach rectangles bound a projector's or spot's light on a
+// draw cheap to repeat (addLightReach): up to 8 x 8 cells.
+static constexpr int kReachLevels = 3;
 
 // The pixels of `area` that draw `d` may cover, or none where they are under `leastShare` of the
 // width x height frame: a small receiver stays with one program. On llvmpipe each switch between
@@ -525,35 +525,6 @@ constexpr int kFinestLevel = 3, kFinestTranslucentLevel = 3;
 // fetch's texel, and one for rounding.
 constexpr float kBehindTestReachTexels = 2.0f;
 
-// The quarters of `box` across its two longest sides under `model` (in the world).
-std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4& model) {
-    glm::vec3 size = box.max - box.min;
-    for (int k = 0; k < 3; ++k) size[k] *= glm::length(glm::vec3(model[k]));
-    const int a = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-    const int b = a == 0 ? (size.y >= size.z ? 1 : 2) : a == 1 ? (size.x >= size.z ? 0 : 2) : (size.x >= size.y ? 0 : 1);
-    const float midA = 0.5f * (box.min[a] + box.max[a]), midB = 0.5f * (box.min[b] + box.max[b]);
-    std::array<scene::Bounds, 4> quarter;
-    for (std::size_t i = 0; i < 4; ++i) {
-        scene::Bounds& c = quarter[i];
-        c = box;
-        (i & 1 ? c.min[a] : c.max[a]) = midA;
-        (i & 2 ? c.min[b] : c.max[b]) = midB;
-    }
-    return quarter;
-}
-
-// An opaque receiver's cells of the world box `box`: `cut` takes a cell to the box it keeps.
-template <class Cut, class Emit>
-void cellsOf(const Cut& cut, const scene::Bounds& box, int level, Emit&& emit) {
-    const scene::Bounds part = cut(OrientedBox(box));
-    if (part.empty()) return;
-    if (level == kFinestLevel) {
-        emit(part);
-        return;
-    }
-    for (const scene::Bounds& q : quarters(box, glm::mat4(1.0f))) cellsOf(cut, q, level + 1, emit);
-}
-
 // A translucent receiver's cells, both sides at once (tintFootprintSides), each side as far down
 // as it is not empty.
 template <class Emit>
@@ -615,7 +586,7 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
                     if (!sides.notInFront.empty()) addNotInFront(sides.notInFront);
                 });
             } else {
-                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, 0,
+                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, kFinestLevel,
                         into(f.notBehind));
             }
         }
@@ -771,19 +742,23 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
         if (d.translucent && options_.transparency != TransparencyMode::SortedObjects) continue;
         const PixelRect own = switchedRect(d, viewProj, width, height, split.area, kLeastSwitchedShare);
         if (own.empty()) continue;
-        // A draw cheap to repeat is bounded cell by cell: a floor's reach is the light's
-        // trapezoid on it, where its whole box gave the trapezoid's bounding rectangle.
         const OrientedBox box(d.meshBounds, d.model);
-        const std::vector<OrientedBox> cells = cellsOf(box, d.triangles <= kSplitTriangles ? kReachCells : 1);
         DrawReach& reach = split.reach[i];
         reach.own = own;
         for (int l : bounded) {
+            const gpu::LightData& light = block.lights[l];
             std::vector<PixelRect> rects;
-            for (const OrientedBox& cell : cells) {
-                const scene::Bounds lit = lightReach(block.lights[l], cell);
-                const PixelRect rect = lit.empty() ? PixelRect{} : screenRect(lit, viewProj, width, height).intersected(own);
+            const auto add = [&](const scene::Bounds& lit) {
+                const PixelRect rect = screenRect(lit, viewProj, width, height).intersected(own);
                 if (!rect.empty()) rects.push_back(rect);
-            }
+            };
+            // A draw cheap to repeat is bounded cell by cell: a floor's reach is the light's
+            // trapezoid on it, where one box gave the trapezoid's bounding rectangle.
+            const scene::Bounds whole = lightReach(light, box);
+            if (!whole.empty() && d.triangles <= kSplitTriangles)
+                cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
+            else if (!whole.empty())
+                add(whole);
             if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // every pixel may be lit
             reach.lights.push_back({1u << static_cast<unsigned>(l), std::move(rects)});
         }

@@ -321,30 +321,20 @@ OrientedBox::OrientedBox(const scene::Bounds& local, const glm::mat4& model) : e
     for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = glm::vec3(model * glm::vec4(local.corner(i), 1.0f));
 }
 
-std::vector<OrientedBox> cellsOf(const OrientedBox& box, int n) {
-    if (box.empty || n <= 1) return {box};
-    // An oriented box is a parallelepiped: corner i = c0 + its edges along x (i & 1), y (i & 2), z (i & 4).
-    const glm::vec3 origin = box.corners[0];
-    const std::array<glm::vec3, 3> edges{box.corners[1] - origin, box.corners[2] - origin, box.corners[4] - origin};
-    std::array<int, 3> cuts{n, n, n};
-    const auto shortest = std::min_element(edges.begin(), edges.end(), [](const glm::vec3& a, const glm::vec3& b) {
-        return glm::dot(a, a) < glm::dot(b, b);
-    });
-    cuts[static_cast<std::size_t>(shortest - edges.begin())] = 1;
-    std::vector<OrientedBox> cells;
-    for (int k = 0; k < cuts[2]; ++k)
-        for (int j = 0; j < cuts[1]; ++j)
-            for (int i = 0; i < cuts[0]; ++i) {
-                OrientedBox::Corners c{};
-                for (int corner = 0; corner < 8; ++corner) {
-                    const glm::vec3 at(static_cast<float>(i + (corner & 1)) / static_cast<float>(cuts[0]),
-                                       static_cast<float>(j + ((corner >> 1) & 1)) / static_cast<float>(cuts[1]),
-                                       static_cast<float>(k + ((corner >> 2) & 1)) / static_cast<float>(cuts[2]));
-                    c[static_cast<std::size_t>(corner)] = origin + at.x * edges[0] + at.y * edges[1] + at.z * edges[2];
-                }
-                cells.emplace_back(c);
-            }
-    return cells;
+std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4& model) {
+    glm::vec3 size = box.max - box.min;
+    for (int k = 0; k < 3; ++k) size[k] *= glm::length(glm::vec3(model[k]));
+    const int a = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+    const int b = a == 0 ? (size.y >= size.z ? 1 : 2) : a == 1 ? (size.x >= size.z ? 0 : 2) : (size.x >= size.y ? 0 : 1);
+    const float midA = 0.5f * (box.min[a] + box.max[a]), midB = 0.5f * (box.min[b] + box.max[b]);
+    std::array<scene::Bounds, 4> quarter;
+    for (std::size_t i = 0; i < 4; ++i) {
+        scene::Bounds& c = quarter[i];
+        c = box;
+        (i & 1 ? c.min[a] : c.max[a]) = midA;
+        (i & 2 ? c.min[b] : c.max[b]) = midB;
+    }
+    return quarter;
 }
 
 scene::Bounds lightReach(const gpu::LightData& light, const OrientedBox& receiver) {

@@ -28,15 +28,27 @@ struct OrientedBox {
     using Corners = std::array<glm::vec3, 8>;  // in scene::Bounds::corner's order
     OrientedBox(const scene::Bounds& world);   // NOLINT: a world box is an oriented box
     OrientedBox(const scene::Bounds& local, const glm::mat4& model);
-    explicit OrientedBox(const Corners& corners) : corners(corners), empty(false) {}
     Corners corners;
     bool empty = true;
 };
 
-// `box` cut into n x n cells across its two longest edges (whole along the shortest): a light's
-// reach or a footprint bounded cell by cell is tighter than the whole box's (a projector's
-// trapezoid on a floor, not its bounding rectangle).
-std::vector<OrientedBox> cellsOf(const OrientedBox& box, int n);
+// The quarters of `box` across its two longest sides under `model` (in the world).
+std::array<scene::Bounds, 4> quarters(const scene::Bounds& box, const glm::mat4& model);
+
+// What `cut` keeps of the world box `box`, cell by cell: quarters of quarters, `levels` deep (up
+// to 4^levels cells), each finest cell's kept box passed to `emit`; a cell `cut` keeps nothing of
+// is not divided further. Their union holds what `cut` keeps of `box`, far tighter than one box
+// does where that is no box (a footprint along a caster's foot, a projector's trapezoid on a floor).
+template <class Cut, class Emit>
+void cellsOf(const Cut& cut, const scene::Bounds& box, int levels, Emit&& emit) {
+    const scene::Bounds part = cut(OrientedBox(box));
+    if (part.empty()) return;
+    if (levels == 0) {
+        emit(part);
+        return;
+    }
+    for (const scene::Bounds& q : quarters(box, glm::mat4(1.0f))) cellsOf(cut, q, levels - 1, emit);
+}
 
 // The part of `receiver` (a world box, or a turned pane's own box) that light `light` may tint
 // through a translucent caster inside `caster`: the world box of the receiver's points whose ray
