@@ -759,6 +759,8 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
                 cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
             else if (!whole.empty())
                 add(whole);
+            // Grown to the tint split's grid, the cells' rectangles merge into few pieces.
+            rects = snapped(own, rects);
             if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // every pixel may be lit
             reach.lights.push_back({1u << static_cast<unsigned>(l), std::move(rects)});
         }
