@@ -755,10 +755,10 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
             // A draw cheap to repeat is bounded cell by cell: a floor's reach is the light's
             // trapezoid on it, where one box gave the trapezoid's bounding rectangle.
             const scene::Bounds whole = lightReach(light, box);
-            if (!whole.empty() && d.triangles <= kSplitTriangles)
-                cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
-            else if (!whole.empty())
-                add(whole);
+            if (!whole.empty()) {
+                if (d.triangles <= kSplitTriangles) cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
+                else add(whole);
+            }
             // Grown to the tint split's grid, the cells' rectangles merge into few pieces.
             rects = snapped(own, rects);
             if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // every pixel may be lit

@@ -45,11 +45,8 @@ vec2 nextSpiralTap(inout SpiralDisk disk, int i) {
                           disk.direction.x * golden.y + disk.direction.y * golden.x);
     return tap;
 }
-// A per-pixel unit direction (interleaved gradient noise), the spiral's start.
-vec2 pixelDirection() {
-    float angle = 6.2831853 * interleavedGradientNoise(gl_FragCoord.xy);
-    return vec2(cos(angle), sin(angle));
-}
+// A per-pixel unit direction, the spiral's start: where pixelRotation turns (1, 0).
+vec2 pixelDirection() { return pixelRotation()[0]; }
 
 // Tap i of a uniform random disk of `radius` texels, different for every pixel:
 // x = sqrt(v) cos 2πu, y = sqrt(v) sin 2πu.
