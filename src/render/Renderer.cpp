@@ -304,10 +304,13 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         glScissor(first, 0, last - first, height);
     }
     const auto splitStart = std::chrono::steady_clock::now();
+    footprintCells_.nextFrame();
+    reachCells_.nextFrame();
     TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, width, height, PixelRect{first, 0, last, height});
     tintSplit.scissored = partial;
     addLightReach(tintSplit, draws, block, cameraViewProj, width, height);
     tintShading_ = tally(tintSplit, draws);
+    tintShading_.footprintsMade = footprintCells_.madeThisFrame() + reachCells_.madeThisFrame();
     tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
     const bool shaded = options_.output == OutputMode::Shaded;
     const GLuint frameFbo = srgbFrame_ ? srgb_.begin(target, width, height, depth_) : hdrFbo_.id();
@@ -547,13 +550,29 @@ void sideCellsOf(const gpu::LightData& light, const OrientedBox& caster, const s
 struct ReceiverFootprints {
     std::vector<PixelRect> tinted, notBehind, notInFront;
 };
+// The non-empty screen rectangles of world boxes `parts` within `own`, appended to `rects`.
+void appendOnScreen(std::vector<PixelRect>& rects, const std::vector<scene::Bounds>& parts, const PixelRect& own,
+                    const glm::mat4& viewProj, int width, int height) {
+    for (const scene::Bounds& part : parts) {
+        const PixelRect rect = screenRect(part, viewProj, width, height).intersected(own);
+        if (!rect.empty()) rects.push_back(rect);
+    }
+}
+
 // A translucent receiver's cells are its own box's (a thin pane's world box holds mostly air); an
-// opaque one's those of its footprint's world box.
+// opaque one's those of its footprint's world box. The footprints and their cells are world boxes
+// that depend on the receiver, the caster and the light alone: `memo` keeps them across frames
+// (the clipping that makes them was most of the split's CPU time), and only their screen
+// rectangles are taken anew. A sun's map follows the view (LightSpace), so its footprints are
+// made again when the camera moves; a spot's, a projector's and a point light's are not.
 ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::vector<OrientedBox>& casters,
                                 const gpu::LightBlock& block, float reach, bool behindBuild, const glm::mat4& viewProj, int width,
-                                int height) {
+                                int height, FrameMemo<FootprintCells>& memo) {
     const OrientedBox receiver(d.meshBounds, d.model);
     ReceiverFootprints f;
+    const auto addOnScreen = [&](std::vector<PixelRect>& rects, const std::vector<scene::Bounds>& parts) {
+        appendOnScreen(rects, parts, own, viewProj, width, height);
+    };
     for (int l = 0; l < block.count.x; ++l) {
         const gpu::LightData& light = block.lights[l];
         if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
@@ -565,30 +584,31 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
         // (CSSM's tiles, 18 texels) matter only to whether any tint is read at all (`pad`).
         const float behindPad = kBehindTestReachTexels + light.shadow.z + 2.0f;
         for (const OrientedBox& caster : casters) {
-            const scene::Bounds footprint = tintFootprint(light, caster, receiver, pad);
-            const PixelRect r = screenRect(footprint, viewProj, width, height).intersected(own);
+            bool made = false;
+            FootprintCells& cells =
+                memo.at(util::Digest().add(light, caster.corners, d.meshBounds, d.model, d.translucent, pad, behindPad).value(), made);
+            if (made) cells.footprint = tintFootprint(light, caster, receiver, pad);
+            const PixelRect r = screenRect(cells.footprint, viewProj, width, height).intersected(own);
             if (r.empty()) continue;
             f.tinted.push_back(r);
             if (!behindBuild) {
                 f.notBehind.push_back(r);
                 continue;
             }
-            const auto into = [&](std::vector<PixelRect>& rects) {
-                return [&](const scene::Bounds& part) {
-                    const PixelRect cell = screenRect(part, viewProj, width, height).intersected(own);
-                    if (!cell.empty()) rects.push_back(cell);
-                };
-            };
-            if (d.translucent) {
-                const auto addNotBehind = into(f.notBehind), addNotInFront = into(f.notInFront);
-                sideCellsOf(light, caster, d.meshBounds, d.model, pad, 0, true, true, [&](const TintSides& sides) {
-                    if (!sides.notBehind.empty()) addNotBehind(sides.notBehind);
-                    if (!sides.notInFront.empty()) addNotInFront(sides.notInFront);
-                });
-            } else {
-                cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); }, footprint, kFinestLevel,
-                        into(f.notBehind));
+            if (!cells.celled) {
+                if (d.translucent) {
+                    sideCellsOf(light, caster, d.meshBounds, d.model, pad, 0, true, true, [&](const TintSides& sides) {
+                        if (!sides.notBehind.empty()) cells.notBehind.push_back(sides.notBehind);
+                        if (!sides.notInFront.empty()) cells.notInFront.push_back(sides.notInFront);
+                    });
+                } else {
+                    cellsOf([&](const OrientedBox& cell) { return tintFootprintNotBehind(light, caster, cell, behindPad); },
+                            cells.footprint, kFinestLevel, [&](const scene::Bounds& part) { cells.notBehind.push_back(part); });
+                }
+                cells.celled = true;
             }
+            addOnScreen(f.notBehind, cells.notBehind);
+            addOnScreen(f.notInFront, cells.notInFront);
         }
     }
     return f;
@@ -647,8 +667,8 @@ Renderer::TintSplit Renderer::splitByTint(const std::vector<Draw>& draws, const 
         if (d.translucent)
             for (std::size_t c = 0; c < casters.size(); ++c)
                 if (casterDraws[c] != i) others.push_back(casters[c]);
-        const ReceiverFootprints f =
-            footprintsOf(d, own, d.translucent ? others : casters, block, reach, behindBuild || d.translucent, viewProj, width, height);
+        const ReceiverFootprints f = footprintsOf(d, own, d.translucent ? others : casters, block, reach, behindBuild || d.translucent,
+                                                  viewProj, width, height, footprintCells_);
         TintedPixels& t = split.draws[i];
         const auto rectCount = [&] {
             std::size_t count = 0;
@@ -747,18 +767,22 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
         reach.own = own;
         for (int l : bounded) {
             const gpu::LightData& light = block.lights[l];
-            std::vector<PixelRect> rects;
-            const auto add = [&](const scene::Bounds& lit) {
-                const PixelRect rect = screenRect(lit, viewProj, width, height).intersected(own);
-                if (!rect.empty()) rects.push_back(rect);
-            };
-            // A draw cheap to repeat is bounded cell by cell: a floor's reach is the light's
-            // trapezoid on it, where one box gave the trapezoid's bounding rectangle.
-            const scene::Bounds whole = lightReach(light, box);
-            if (!whole.empty()) {
-                if (d.triangles <= kSplitTriangles) cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
-                else add(whole);
+            // The lit world boxes, kept across frames (footprintsOf). A draw cheap to repeat is
+            // bounded cell by cell: a floor's reach is the light's trapezoid on it, where one box
+            // gave the trapezoid's bounding rectangle.
+            const bool byCells = d.triangles <= kSplitTriangles;
+            bool made = false;
+            std::vector<scene::Bounds>& lit = reachCells_.at(util::Digest().add(light, box.corners, byCells).value(), made);
+            if (made) {
+                const scene::Bounds whole = lightReach(light, box);
+                const auto add = [&lit](const scene::Bounds& part) { lit.push_back(part); };
+                if (!whole.empty()) {
+                    if (byCells) cellsOf([&](const OrientedBox& cell) { return lightReach(light, cell); }, whole, kReachLevels, add);
+                    else add(whole);
+                }
             }
+            std::vector<PixelRect> rects;
+            appendOnScreen(rects, lit, own, viewProj, width, height);
             // Grown to the tint split's grid, the cells' rectangles merge into few pieces.
             rects = snapped(own, rects);
             if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // every pixel may be lit

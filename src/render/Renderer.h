@@ -14,6 +14,7 @@
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
 #include "render/SrgbTarget.h"
+#include "render/FrameMemo.h"
 #include "render/TintReach.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
@@ -155,6 +156,10 @@ public:
         std::size_t translucentUntinted = 0, translucentBehindLayers = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
         double cpuMs = 0.0;  // the footprints and rectangles' CPU time (render/TintReach.h)
         std::size_t unlitPieces = 0;  // pieces drawn with a light left out (addLightReach), both passes
+        // Tint footprints (per receiver, caster and light) and lights' reaches (per draw and light),
+        // each with its cells, worked out this frame rather than kept from the last (FrameMemo: a
+        // still scene works out none after its first frame, whatever the camera does).
+        std::size_t footprintsMade = 0;
     };
     const TintShading& tintShading() const { return tintShading_; }
     std::size_t shadowMemoryBytes() const { return technique_->memoryBytes(); }
@@ -232,6 +237,10 @@ private:
     LightingPrograms lighting_;
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
     TintShading tintShading_;
+    // The world boxes behind the split and the lights' reach, per receiver, caster and light
+    // (render/FrameMemo.h): kept while those stay put, whatever the camera does.
+    mutable FrameMemo<FootprintCells> footprintCells_;
+    mutable FrameMemo<std::vector<scene::Bounds>> reachCells_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster programs,

@@ -102,6 +102,16 @@ TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& cas
 // square frustum); the whole box for other lights. Empty where the light reaches none of it.
 scene::Bounds lightReach(const gpu::LightData& light, const OrientedBox& receiver);
 
+// What the renderer keeps per receiver, caster and light across frames (render/FrameMemo.h): the
+// tint footprint and, once it has been on screen, its cells (world boxes, from cellsOf or the
+// translucent receivers' both sides). Neither depends on the camera, except through a sun's map
+// that follows the view; their screen rectangles do, and those are taken anew each frame.
+struct FootprintCells {
+    scene::Bounds footprint;
+    bool celled = false;  // the cells below are worked out
+    std::vector<scene::Bounds> notBehind, notInFront;
+};
+
 // A pixel rectangle [x0, x1) x [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

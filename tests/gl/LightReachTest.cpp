@@ -71,6 +71,68 @@ TEST_P(LightReach, ShadesEveryPixelAsEveryLightEverywhereDoes) {
     EXPECT_GT(lit, 300u) << GetParam() << ": the projector's and the spot's light are in view";
 }
 
+// The world boxes behind the tint split and the lights' reach are kept across frames while their
+// receiver, caster and light stay put (render/FrameMemo.h). A renderer that keeps them must shade
+// every pixel as a new one does: after the camera moved (the sun's footprints are made again, as
+// its map follows the view; the projector's and the spot's are kept) and after the pane moved (its footprints made again; a
+// box kept from its old place would leave its coloured shadow, or the ground's split around it,
+// where it was).
+TEST(LightReachKept, KeptBoxesShadeAsNewOnes) {
+    scene::Scene s = partlyLitGround();
+    const render::RenderOptions options = optionsFor("cssm2");
+    render::Renderer kept(s, options);
+    render::OffscreenTarget target(kWidth, kHeight);
+    std::size_t freshFootprints = 0;
+    render::Renderer::TintShading freshShading;
+    const auto freshFrame = [&](const scene::Camera& camera) {
+        render::Renderer fresh(s, options);
+        fresh.render(0.0f, camera, kWidth, kHeight, target.framebuffer());
+        freshFootprints = fresh.tintShading().footprintsMade;
+        freshShading = fresh.tintShading();
+        return fresh.readLinear();
+    };
+    // The same pieces as the new renderer's, rectangle for rectangle (counted).
+    const auto samePieces = [&] {
+        const render::Renderer::TintShading& t = kept.tintShading();
+        EXPECT_EQ(t.split, freshShading.split);
+        EXPECT_EQ(t.tintedRects, freshShading.tintedRects);
+        EXPECT_EQ(t.untintedRects, freshShading.untintedRects);
+        EXPECT_EQ(t.behindLayersRects, freshShading.behindLayersRects);
+        EXPECT_EQ(t.unlitPieces, freshShading.unlitPieces);
+    };
+    const auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < a.size(); i += 4)
+            count += std::abs(a[i] - b[i]) > 1e-6f || std::abs(a[i + 1] - b[i + 1]) > 1e-6f || std::abs(a[i + 2] - b[i + 2]) > 1e-6f;
+        return count;
+    };
+    const auto renderKept = [&](const scene::Camera& camera) {
+        kept.render(0.0f, camera, kWidth, kHeight, target.framebuffer());
+        return kept.tintShading().footprintsMade;
+    };
+    EXPECT_GT(renderKept(s.camera), 0u);
+    EXPECT_GT(kept.tintShading().unlitPieces, 0u);
+    EXPECT_EQ(renderKept(s.camera), 0u) << "nothing moved";
+
+    scene::Camera moved = s.camera;
+    moved.position += glm::vec3(2.0f, -1.5f, 1.0f);
+    const std::size_t madeAfterCamera = renderKept(moved);
+    const std::vector<float> afterCamera = kept.readLinear();
+    EXPECT_EQ(differing(afterCamera, freshFrame(moved)), 0u);
+    samePieces();
+    EXPECT_LT(madeAfterCamera, freshFootprints / 2) << "the projector's and the spot's footprints and reach are kept";
+    EXPECT_EQ(renderKept(moved), 0u);
+
+    s.objects.back().position += glm::vec3(3.0f, 0.0f, 1.5f);  // the green pane
+    const std::size_t madeAfterPane = renderKept(moved);
+    const std::vector<float> afterPane = kept.readLinear();
+    EXPECT_EQ(differing(afterPane, freshFrame(moved)), 0u);
+    samePieces();
+    EXPECT_GT(madeAfterPane, 0u) << "the pane's footprints and reach are new";
+    EXPECT_LT(madeAfterPane, freshFootprints) << "the other draws' reach is kept";
+    EXPECT_GT(differing(afterPane, afterCamera), 50u) << "the pane and its coloured shadow moved in view";
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, LightReach, ::testing::Values("hard", "pcss", "vsm", "cssm2"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return testNameOf(info.param); });
 
