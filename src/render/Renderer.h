@@ -9,12 +9,12 @@
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/FrameMemo.h"
 #include "render/FrameTimer.h"
 #include "render/GpuScene.h"
 #include "render/LightingProgram.h"
 #include "render/PlaceholderTextures.h"
 #include "render/SrgbTarget.h"
-#include "render/FrameMemo.h"
 #include "render/TintReach.h"
 #include "render/Transparency.h"
 #include "scene/Scene.h"
@@ -158,7 +158,8 @@ public:
         std::size_t unlitPieces = 0;  // pieces drawn with a light left out (addLightReach), both passes
         // Tint footprints (per receiver, caster and light) and lights' reaches (per draw and light),
         // each with its cells, worked out this frame rather than kept from the last (FrameMemo: a
-        // still scene works out none after its first frame, whatever the camera does).
+        // still scene works out none after its first frame but a sun's when the camera moves, as
+        // the sun's map follows the view).
         std::size_t footprintsMade = 0;
     };
     const TintShading& tintShading() const { return tintShading_; }
@@ -238,7 +239,7 @@ private:
     gl::Program resolve_, foggedResolve_, overlay_, lines_;
     TintShading tintShading_;
     // The world boxes behind the split and the lights' reach, per receiver, caster and light
-    // (render/FrameMemo.h): kept while those stay put, whatever the camera does.
+    // (render/FrameMemo.h): kept while those stay put.
     mutable FrameMemo<FootprintCells> footprintCells_;
     mutable FrameMemo<std::vector<scene::Bounds>> reachCells_;
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
