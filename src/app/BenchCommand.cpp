@@ -48,7 +48,22 @@ std::string nowIso() {
     return text;
 }
 
+std::vector<bench::BenchCase> onePass(const BenchJob& job);
+
+// The case list, once per round (BenchJob::rounds): every case of a round is measured before the
+// next round starts, so that the rounds' ratios compare cases measured seconds apart.
 std::vector<bench::BenchCase> plan(const BenchJob& job) {
+    const std::vector<bench::BenchCase> once = onePass(job);
+    std::vector<bench::BenchCase> cases;
+    for (int round = 0; round < job.rounds; ++round)
+        for (bench::BenchCase c : once) {
+            c.round = round;
+            cases.push_back(std::move(c));
+        }
+    return cases;
+}
+
+std::vector<bench::BenchCase> onePass(const BenchJob& job) {
     std::vector<bench::BenchCase> cases;
     for (const std::string& suite : job.suites)
         for (bench::BenchCase c : bench::suiteCases(suite, job.outDir / "scenes")) cases.push_back(std::move(c));
@@ -157,6 +172,19 @@ void printFloorRatios(const std::vector<bench::CaseResult>& results) {
     }
 }
 
+// With --rounds: each case's frame against its scene's first case, round by round, and medians.
+void printRoundRatios(const std::vector<bench::CaseResult>& results) {
+    const auto rows = bench::roundRatios(results);
+    if (rows.empty()) return;
+    std::printf("in rounds (median frame ms of each case ÷ its scene's first case's, in the same round; median over the rounds):\n");
+    for (const auto& q : rows) {
+        std::printf("  %-30.30s @%-14.14s %8.2f ms  %6.3fx %s  [", q.label.c_str(), q.sceneName.c_str(), q.medianFrameMs, q.medianRatio,
+                    q.base.c_str());
+        for (std::size_t k = 0; k < q.ratios.size(); ++k) std::printf("%s%.3f", k ? " " : "", q.ratios[k]);
+        std::printf("]\n");
+    }
+}
+
 }  // namespace
 
 int runBench(const BenchJob& job) {
@@ -197,6 +225,7 @@ int runBench(const BenchJob& job) {
     printTable(results);
     printScaling(results);
     printFloorRatios(results);
+    printRoundRatios(results);
     std::printf("wrote %s/bench.json, bench.csv and report.html\n", job.outDir.string().c_str());
     return 0;
 }

@@ -15,6 +15,7 @@ struct BenchJob {
     std::vector<int> shadowResolutions;         // empty: each light's own
     std::vector<std::string> suites;
     std::vector<std::size_t> gridScenes;  // generated grid scenes of about these many triangles
+    int rounds = 1;  // the case list measured this many times in turn (bench::roundRatios)
     bench::BenchSettings settings;
     std::filesystem::path outDir = "bench-out";
     std::filesystem::path baseline;

@@ -167,6 +167,11 @@ int main(int argc, char** argv) {
                         ->check(CLI::PositiveNumber);
     benchCmd->add_option("--frames", bench.settings.frames, "measure each case this many frames instead")
         ->check(CLI::Range(1, 1000000))->excludes(seconds);
+    benchCmd->add_option("--rounds", bench.rounds,
+                         "measure the whole case list this many times in turn and print each case's frame against its "
+                         "scene's first case, round by round, with the median (default 1; ratios that hold on a machine "
+                         "whose speed swings within seconds)")
+        ->check(CLI::Range(1, 100));
     benchCmd->add_option("--warmup-seconds", bench.settings.warmupSeconds, "warm up at least this long, then until frame times settle (default 1)")
         ->check(CLI::Range(0.0, 600.0));
     benchCmd->add_option("--out", bench.outDir, "output folder (default ./bench-out)");

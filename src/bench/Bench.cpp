@@ -257,7 +257,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
         r.calibrated = true;
     }
 
-    if (settings.images) {
+    if (settings.images && c.round == 0) {  // later rounds (--rounds) draw the same pictures
         engine->frame(0.0f, settings.fixedCamera ? scene.camera : benchCamera(scene, 0.0f), w, h);
         r.image = render::readFramebufferRgba8(engine->framebuffer(), w, h);
     }

@@ -32,6 +32,7 @@ struct BenchCase {
     shadows::ParameterValues parameters;  // on top of BenchSettings::render.parameters
     std::string label;                    // what tables call it; technique[, parameters] when empty
     bool redrawShadowMaps = false;        // every map every frame, whatever BenchSettings::render says
+    int round = 0;                        // which pass over the case list (BenchJob::rounds), from 0
 };
 
 struct BenchSettings {

@@ -62,6 +62,51 @@ std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
     return ratios;
 }
 
+static double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results) {
+    const int rounds = results.empty() ? 0 : results.back().spec.round + 1;
+    if (rounds < 2) return {};
+    const auto sameCase = [](const CaseResult& a, const CaseResult& b) {
+        return a.spec.scene == b.spec.scene && a.spec.suite == b.spec.suite && caseLabel(a) == caseLabel(b) &&
+               a.spec.shadowResolution == b.spec.shadowResolution;
+    };
+    // Round k holds the first round's list again (plan() repeats it): case i of round k is results[k * perRound + i].
+    const std::size_t perRound = results.size() / static_cast<std::size_t>(rounds);
+    if (perRound * static_cast<std::size_t>(rounds) != results.size()) return {};
+    std::vector<RoundRatio> rows;
+    for (std::size_t i = 0; i < perRound; ++i) {
+        const CaseResult& r = results[i];
+        std::size_t baseIndex = 0;
+        while (results[baseIndex].spec.scene != r.spec.scene) ++baseIndex;
+        RoundRatio row{caseLabel(r), r.sceneName, caseLabel(results[baseIndex]), {}, {}, 0, 0};
+        for (int k = 0; k < rounds; ++k) {
+            const CaseResult& c = results[static_cast<std::size_t>(k) * perRound + i];
+            const CaseResult& base = results[static_cast<std::size_t>(k) * perRound + baseIndex];
+            if (!sameCase(c, r) || !sameCase(base, results[baseIndex])) return {};  // not a repeated list
+            row.frameMs.push_back(c.frameMs.median);
+            row.ratios.push_back(base.frameMs.median > 0 ? c.frameMs.median / base.frameMs.median : 0.0);
+        }
+        row.medianFrameMs = median(row.frameMs);
+        row.medianRatio = median(row.ratios);
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+static json roundRatiosJson(const std::vector<CaseResult>& results) {
+    json rows = json::array();
+    for (const RoundRatio& q : roundRatios(results))
+        rows.push_back({{"label", q.label}, {"scene_name", q.sceneName}, {"base", q.base}, {"frame_ms_median_per_round", q.frameMs},
+                        {"ratio_to_base_per_round", q.ratios}, {"frame_ms_median", q.medianFrameMs}, {"ratio_to_base_median", q.medianRatio}});
+    return rows;
+}
+
 static json floorRatiosJson(const std::vector<CaseResult>& results) {
     json rows = json::array();
     for (const FloorRatio& q : floorRatios(results))
@@ -121,6 +166,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
         if (r.calibrated) calibration["finish_overhead_ms"] = r.finishOverheadMs;
         json c = {
             {"suite", r.spec.suite},
+            {"round", r.spec.round},
             {"label", caseLabel(r)},
             {"scene", r.spec.scene.string()},
             {"scene_name", r.sceneName},
@@ -187,6 +233,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
         {"cases", cases},
         {"shadow_pass_scaling", scalingJson(results)},
         {"floor_ratios", floorRatiosJson(results)},
+        {"rounds", roundRatiosJson(results)},
     };
 }
 

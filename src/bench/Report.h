@@ -77,4 +77,16 @@ struct FloorRatio {
 };
 std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results);
 
+// With the case list measured in several rounds in turn (`bench --rounds N`), each case of the
+// first round against the first case of its scene (`base`), round by round: the median of its
+// frames ÷ the base's in the same round, and the median of those ratios. A machine whose speed
+// swings within seconds moves both cases of a round alike, so the ratios hold where single
+// frame times do not. Empty with one round.
+struct RoundRatio {
+    std::string label, sceneName, base;
+    std::vector<double> frameMs, ratios;  // per round: median frame (wall clock), ÷ the base's
+    double medianFrameMs = 0, medianRatio = 0;
+};
+std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results);
+
 }  // namespace penumbra::bench

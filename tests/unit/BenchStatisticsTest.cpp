@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <tuple>
+
 namespace penumbra::bench {
 namespace {
 
@@ -102,6 +105,39 @@ TEST(FloorRatios, DivideEachCaseByTheFloorOfItsOwnSceneAndKind) {
     EXPECT_DOUBLE_EQ(ratios[1].frame, 2.5);
     EXPECT_DOUBLE_EQ(ratios[1].shadowPass, 0.5);
     EXPECT_EQ(ratios[1].lights, 2u);
+}
+
+// `bench --rounds`: the list {none, hard} on scene a and {hard} on scene b, three rounds. Within a
+// round the machine's speed moves every case alike (here by a factor per round), so the ratios to
+// each scene's first case hold while the frame times swing.
+TEST(RoundRatios, DivideEachCaseByItsScenesFirstCaseRoundByRoundAndTakeTheMedians) {
+    std::vector<CaseResult> results;
+    const double speed[3] = {1.0, 2.0, 0.5};
+    for (int round = 0; round < 3; ++round)
+        for (const auto& [technique, scene, ms] : {std::tuple{"none", "a", 10.0}, std::tuple{"hard", "a", 15.0}, std::tuple{"hard", "b", 7.0}}) {
+            CaseResult r = floorCase(technique, scene, 0, 0, 0);
+            r.spec.round = round;
+            r.frameMs.median = ms * speed[round] * (round == 1 && std::string(technique) == "hard" ? 1.2 : 1.0);
+            results.push_back(r);
+        }
+    const std::vector<RoundRatio> rows = roundRatios(results);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0].label, "none");
+    EXPECT_EQ(rows[0].medianRatio, 1.0);
+    EXPECT_EQ(rows[1].label, "hard");
+    EXPECT_EQ(rows[1].base, "none");
+    ASSERT_EQ(rows[1].ratios.size(), 3u);
+    EXPECT_DOUBLE_EQ(rows[1].ratios[1], 1.8);   // 15 x 2 x 1.2 against 10 x 2
+    EXPECT_DOUBLE_EQ(rows[1].medianRatio, 1.5);  // of 1.5, 1.8, 1.5
+    EXPECT_DOUBLE_EQ(rows[1].medianFrameMs, 15.0);  // of 15, 36, 7.5
+    EXPECT_EQ(rows[2].sceneName, "b");
+    EXPECT_EQ(rows[2].base, "hard");  // scene b's first case is itself
+    EXPECT_EQ(rows[2].medianRatio, 1.0);
+
+    results.pop_back();  // not whole rounds of one list
+    EXPECT_TRUE(roundRatios(results).empty());
+    results.resize(3);  // one round
+    EXPECT_TRUE(roundRatios(results).empty());
 }
 
 }  // namespace
