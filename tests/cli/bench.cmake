@@ -91,19 +91,24 @@ if(NOT rowCount EQUAL 7)
   message(FATAL_ERROR "bench.csv: ${rowCount} lines, expected a header and 6 rows")
 endif()
 
-# The page in headless Chromium: a harness page loads it in a frame and reports what it finds.
+# A report page in headless Chromium: a harness page loads it in a frame and reports what it
+# finds (JSON: canvases, painted, images, decoded, tables, captions, headings).
 find_program(CHROMIUM NAMES chromium chromium-browser REQUIRED)
-execute_process(
-  COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --allow-file-access-from-files
-          --enable-logging=stderr --v=0 --virtual-time-budget=20000 --dump-dom
-          "file://${CMAKE_CURRENT_LIST_DIR}/report_check.html?report=file://${OUT}/report.html"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log)
-if(NOT rc EQUAL 0 OR NOT dom MATCHES "RESULT ({[^<]*})")
-  message(FATAL_ERROR "headless Chromium did not report on the page (exit ${rc}):\n${dom}\n${log}")
-endif()
-set(result "${CMAKE_MATCH_1}")
-string(REPLACE "&quot;" "\"" result "${result}")
-message("report.html in Chromium: ${result}")
+function(check_report page out_var)
+  execute_process(
+    COMMAND ${WITHOUT_PRELOAD} timeout 120 "${CHROMIUM}" --headless --no-sandbox --disable-gpu --allow-file-access-from-files
+            --enable-logging=stderr --v=0 --virtual-time-budget=20000 --dump-dom
+            "file://${CMAKE_CURRENT_LIST_DIR}/report_check.html?report=file://${page}"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log)
+  if(NOT rc EQUAL 0 OR NOT dom MATCHES "RESULT ({[^<]*})")
+    message(FATAL_ERROR "headless Chromium did not report on ${page} (exit ${rc}):\n${dom}\n${log}")
+  endif()
+  set(result "${CMAKE_MATCH_1}")
+  string(REPLACE "&quot;" "\"" result "${result}")
+  message("${page} in Chromium: ${result}")
+  set(${out_var} "${result}" PARENT_SCOPE)
+endfunction()
+check_report("${OUT}/report.html" result)
 string(JSON canvases GET "${result}" canvases)
 string(JSON painted GET "${result}" painted)
 string(JSON images GET "${result}" images)
@@ -224,4 +229,10 @@ if(NOT m EQUAL middle OR m LESS 1)
 endif()
 if(NOT rounds MATCHES "in rounds [^\n]*\n +none +@bench_tiny +[0-9.]+ ms +1\\.000x none +\\[1\\.000 1\\.000 1\\.000\\]\n +hard ")
   message(FATAL_ERROR "stdout lacks the rounds' table")
+endif()
+check_report("${OUT}/rounds/report.html" result)
+string(JSON images GET "${result}" images)
+string(FIND "${result}" "\"In rounds" at)
+if(NOT images EQUAL 2 OR at LESS 0)
+  message(FATAL_ERROR "rounds' report.html: ${images} images, expected 2 (round 1's); a table headed 'In rounds' expected")
 endif()
