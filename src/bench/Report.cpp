@@ -62,13 +62,6 @@ std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
     return ratios;
 }
 
-static double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results) {
     const int rounds = results.empty() ? 0 : results.back().spec.round + 1;
     if (rounds < 2) return {};
@@ -92,8 +85,8 @@ std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results) {
             row.frameMs.push_back(c.frameMs.median);
             row.ratios.push_back(base.frameMs.median > 0 ? c.frameMs.median / base.frameMs.median : 0.0);
         }
-        row.medianFrameMs = median(row.frameMs);
-        row.medianRatio = median(row.ratios);
+        row.medianFrameMs = summarize(row.frameMs).median;
+        row.medianRatio = summarize(row.ratios).median;
         rows.push_back(std::move(row));
     }
     return rows;
