@@ -580,8 +580,8 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
         const float pad = reach + light.shadow.z + 2.0f;
         // Whether an opaque receiver is behind every layer is the behind-layers build's test alone
         // (colouredByTint's behindEveryLayer: the bilinear tint at its texel, 2 x 2 texels), so
-        // only casters that reach those texels count there; the whole lookup's farther reads
-        // (CSSM's tiles, 18 texels) matter only to whether any tint is read at all (`pad`).
+        // only casters that reach those texels count there; the whole lookup's reach (`pad`)
+        // decides only whether any tint is read at all.
         const float behindPad = kBehindTestReachTexels + light.shadow.z + 2.0f;
         for (const OrientedBox& caster : casters) {
             bool made = false;

@@ -175,8 +175,10 @@ public:
     // opaque pass). The renderer rebuilds the program when they change.
     virtual std::vector<std::string> lookupDefines() const { return {}; }
     // How far from a receiver's own texel, in texels of its light's map (LightSpace::texelScale),
-    // the lookup may read what translucent casters wrote (tint maps, coloured layers), normal
-    // offset not counted; negative where that is not bounded by the light's map (maps of their
+    // a translucent caster's layer can change the lookup's answer: the farthest it reads what
+    // translucent casters wrote (tint maps, coloured layers), or less where its answer is exactly
+    // white unless a layer lies nearer (CSSM's box filters with coverage); normal offset not
+    // counted; negative where that is not bounded by the light's map (maps of their
     // own, cascades or warps, whose texels may be coarser) or where the lookup reads no tint
     // (`none`): every receiver then gets the one whole program. The renderer shades receivers no
     // translucent caster's shadow reaches with a program that reads none (render/TintReach.h).

@@ -10,6 +10,7 @@
 // are big enough (over 3 % of the frame) for the renderer to switch their program.
 #include "GlTestSupport.h"
 
+#include "reference/Comparison.h"
 #include "render/Offscreen.h"
 
 #include <algorithm>
@@ -209,8 +210,41 @@ TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeL
                 }
             std::printf("%s, %s: %zu pixels off by over 3/255, largest difference %.4f\n", glass ? "glass" : "pane and block",
                         technique, off, most);
-            EXPECT_LE(off, 40u) << technique;  // cssm 7-9, hard 21 now (nearest-texel rims); 180-563 with each of the faults above
+            // Measured: hard 21 (nearest-texel rims); cssm 55-59 since the box filters' reach is the
+            // bilinear tint's 2 texels (7-9 with 18, where the whole lookup's rim counts spread
+            // another layer's shadow onto a receiver: closer to the reference without, see below);
+            // 180-563 with each of the faults above.
+            EXPECT_LE(off, 64u) << technique;
         }
+}
+
+// Where CSSM's split and its whole lookup differ on translucent receivers (their rims as the light
+// sees them), the split is no farther from the ray-traced truth: the whole lookup's count of the
+// receiver's own tile spreads another layer's shadow up to 7 texels onto a rim, which the builds
+// for one side leave out. Measured (llvmpipe, 320 x 200, translucent receivers scored by the light
+// reaching them): RMSE 0.0249494 against 0.0249497, wrong 0.3856 % either way, 6,351 pixel-lights
+// differing. Footprints 12 texels short of the bilinear tint's reach put it at 0.0568 and 0.78 %.
+TEST(TintReachTranslucent, TheSplitIsNoFartherFromTheReferenceThanTheWholeLookup) {
+    scene::Scene s = glassReceivers();
+    reference::Comparison cmp(s, 320, 200, 0.0f, /*translucentReceivers=*/true);
+    cmp.traceReference(1, false);
+    render::RenderOptions reached;
+    reached.transparency = render::TransparencyMode::SortedObjects;
+    render::RenderOptions everywhere = reached;
+    everywhere.tintOnlyWhereReached = false;
+    cmp.setRenderOptions(reached);
+    const auto split = cmp.evaluate("cssm2", 0, 0);
+    cmp.setRenderOptions(everywhere);
+    const auto whole = cmp.evaluate("cssm2", 0, 0);
+    std::size_t differ = 0;
+    for (std::size_t l = 0; l < split.visibility.size(); ++l)
+        for (std::size_t i = 0; i < split.visibility[l].size(); ++i)
+            differ += glm::length(split.visibility[l][i] - whole.visibility[l][i]) > 1e-4f;
+    std::printf("cssm2, translucent receivers: %zu pixel-lights differ; RMSE split %.7f, whole lookup %.7f; wrong %.4f%% / %.4f%%\n",
+                differ, split.rmse, whole.rmse, 100 * split.wrongShare, 100 * whole.wrongShare);
+    EXPECT_GT(differ, 0u) << "the split must reach the scored renderer";
+    EXPECT_LE(split.rmse, whole.rmse);
+    EXPECT_LE(split.wrongShare, whole.wrongShare);
 }
 
 // Techniques whose sun maps are their own (cascades, warps) give every receiver the whole lookup.
