@@ -243,8 +243,10 @@ TEST(TintReachTranslucent, TheSplitIsNoFartherFromTheReferenceThanTheWholeLookup
     std::printf("cssm2, translucent receivers: %zu pixel-lights differ; RMSE split %.7f, whole lookup %.7f; wrong %.4f%% / %.4f%%\n",
                 differ, split.rmse, whole.rmse, 100 * split.wrongShare, 100 * whole.wrongShare);
     EXPECT_GT(differ, 0u) << "the split must reach the scored renderer";
-    EXPECT_LE(split.rmse, whole.rmse);
-    EXPECT_LE(split.wrongShare, whole.wrongShare);
+    // Margins of 0.1 % of the RMSE and 0.01 % of the pixels, for another driver's rounding at the
+    // rims: far below what a split that loses coloured shadow gives (2.3x and 2x here).
+    EXPECT_LE(split.rmse, whole.rmse * 1.001);
+    EXPECT_LE(split.wrongShare, whole.wrongShare + 1e-4);
 }
 
 // Techniques whose sun maps are their own (cascades, warps) give every receiver the whole lookup.
