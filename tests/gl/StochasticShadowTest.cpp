@@ -181,15 +181,17 @@ TEST_P(Stochastic, ReceiverBetweenPanesGetsOnlyThePanesInFrontOfIt) {
 }
 
 // Where a pane lies behind the receiver, the tint map (every layer's product) must not decide:
-// its alpha bounds the farthest layer over each texel's neighbours (DepthAndTintMaps::TintAlpha::
-// FarthestAround), so a receiver whose bilinear footprint reaches one texel of the rear pane is
-// counted instead. With the texel's own farthest depth alone, footprints straddling the rear
+// the least of its alpha over the 2 x 2 texels the bilinear tint blends bounds the farthest layer
+// there (DepthAndTintMaps::TintAlpha::FarthestLayer, farthestAround in cssm/lookup.glsl), so a
+// receiver whose bilinear footprint reaches one texel of the rear pane is counted instead. With
+// the bilinear blend of the alpha, or the texel it lands in, footprints straddling the rear
 // pane's edges blend its product in, up to (1 - 0.5) x 0.5 too dark there: a band under half a
 // texel wide beside each edge. Pixels land in that band whichever side of the neighbourhood a
 // broken bound leaves out, because the texels (4 cm) are nearly as wide as the pixels (4.5 cm)
 // and the rear pane, turned 20 degrees and clear of the front pane's seam, shows all four edges
-// crossing the pixel grid at every offset. Measured: 57 pixels off with no bound, 4-13 with any
-// one side of the 3 x 3 left out, 0 with it. (The first version of this test, with edges along
+// crossing the pixel grid at every offset. Measured: 57 pixels off with the alpha's bilinear blend
+// or the texel the fetch lands in, 0 with the least of the 2 x 2 (stop 52); with the 3 x 3 bound
+// that pass of its own wrote before, 57 with no bound, 4-13 with any one side of it left out. (The first version of this test, with edges along
 // the pixel grid and 2 cm texels, caught neither a missing left nor a missing right side: a
 // band either held a row of pixel centres along the whole edge or none.)
 TEST_P(Stochastic, ReceiverBetweenPanesIsExactUpToTheEdgeOfAPaneBehindIt) {

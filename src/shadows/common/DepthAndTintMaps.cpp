@@ -89,18 +89,13 @@ void DepthAndTintMaps::ensure(std::size_t i, int res, bool cube) {
     m.movingTexels.assign(faces, TexelRect(0));
     m.depthOverStill.assign(faces, 0);
     m.depthMovedIn.assign(faces, TexelRect(0));
-    // FarthestAround's bound is made from the drawn alpha; NearestLayer maps get theirs in scenes
-    // with translucent casters (render).
-    if (withTint_ && tintAlpha_ == TintAlpha::FarthestAround) ensureDrawn(m);
+    // CSSM's maps (FarthestLayer) are made with theirs, which its translucent receivers read;
+    // NearestLayer maps get theirs in scenes with translucent casters (render).
+    if (withTint_ && tintAlpha_ == TintAlpha::FarthestLayer) ensureDrawn(m);
 }
 
 bool DepthAndTintMaps::ensureDrawn(LightMaps& m) {
     if (m.drawn.id() != 0) return false;
-    const bool around = tintAlpha_ == TintAlpha::FarthestAround;
-    if (around && !farthestAround_.id()) {
-        farthestAround_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert",
-                                              .fragment = "src/shadows/common/glsl/farthest_around.frag"});
-    }
     const int res = m.resolution;
     const float noLayer[2] = {1.0f, 1.0f};  // 1 - the farthest depths where no layer is
     // Full precision: translucent receivers tell their own layer from one just behind it by these
@@ -114,26 +109,8 @@ bool DepthAndTintMaps::ensureDrawn(LightMaps& m) {
         m.tintFaces[f].attach(GL_COLOR_ATTACHMENT1, drawnFace(m, f));
         m.tintFaces[f].setDrawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
         m.tintFaces[f].checkComplete("shadow tint map with drawn alpha " + std::to_string(res));
-        if (!around) continue;
-        m.tintFaceViews.push_back(gl::Texture::view2D(m.tint, GL_RGBA16F, f));
-        m.boundTargets.push_back(gl::Framebuffer::colourOnly(m.tintFaceViews.back(), -1, "tint's bound " + std::to_string(res)));
     }
     return true;
-}
-
-void DepthAndTintMaps::boundFarthestAround(LightMaps& m, std::size_t face, const TexelRect& drawn) {
-    fullscreenVao_.bind();
-    // The least drawn alpha over each 3 x 3 neighbourhood into the tint's alpha, rgb kept.
-    const ScopedScissor scissor(grown(drawn, glm::ivec2(1), m.resolution));
-    const gl::ScopedPassState state(gl::PassState::fullscreen().withBlend({GL_FUNC_ADD, GL_FUNC_ADD, GL_ZERO, GL_ONE, GL_ONE, GL_ZERO}));
-    m.boundTargets[face].bind();
-    farthestAround_.use();
-    farthestAround_.set("uCubeFace", m.cube ? 1 : 0);
-    drawnFace(m, face).bind(0);
-    rawSampler_.bind(0);  // nearest, clamped to the edge
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    gl::Sampler::unbind(0);
-    gl::unbindTextureUnits(1);
 }
 
 void DepthAndTintMaps::ensureStill(LightMaps& m) {
@@ -240,9 +217,6 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const CasterSelection translucent{Casters::Translucent, vp, light, Motion::Any, vp};
             const TexelRect translucentTexels = texelRect(frame.casterBounds(translucent), vp, ls.resolution);
             const TexelRect tinted = withTint_ ? translucentTexels : TexelRect(0);
-            // FarthestAround bounds reach one texel past the layers'.
-            const bool around = tintAlpha_ == TintAlpha::FarthestAround;
-            const TexelRect tintWritten = around ? grown(tinted, glm::ivec2(1), ls.resolution) : tinted;
             const bool anyTranslucent = !isEmpty(tinted);
             // A light whose depth lives elsewhere needs this depth only as the tint pass's depth
             // test, under the translucent casters: the opaque casters are culled to those texels
@@ -269,13 +243,13 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             m.movingTexels[face] = movingTexels;
             // The tint texels to draw again (nothing without a tint map): what changed, or where the
             // last translucent casters may have left something and where this frame's are.
-            const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tintWritten);
+            const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tinted);
             if (light != depthElsewhere || (anyTranslucent && !isEmpty(redraw))) {
                 const gl::ScopedPassState state(opaquePass);
                 renderOpaque(frame, m, face, light, region, stillKey, moving);
             }
             if (isEmpty(redraw)) continue;
-            m.tintDirty[face] = kept ? unite(m.tintDirty[face], tintWritten) : tintWritten;
+            m.tintDirty[face] = kept ? unite(m.tintDirty[face], tinted) : tinted;
             redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw, lights[i]);
         }
     }
@@ -291,14 +265,14 @@ bool DepthAndTintMaps::keepTranslucent(LightMaps& m, std::size_t face, std::uint
 
 void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::size_t face, const CasterSelection* translucent,
                                   const TexelRect& redraw, const Light& light) {
-    const bool around = tintAlpha_ == TintAlpha::FarthestAround, drawn = m.drawn.id() != 0;
-    clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f, 1.0f, 1.0f, around ? 1.0f : 0.0f));  // alpha: no layer
+    const bool farthest = tintAlpha_ == TintAlpha::FarthestLayer, drawn = m.drawn.id() != 0;
+    clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f, 1.0f, 1.0f, farthest ? 1.0f : 0.0f));  // alpha: no layer
     if (drawn) clearColourIn(m.tintFaces[face].id(), redraw, glm::vec4(1.0f), 1);  // the drawn alpha: no layer
     if (translucent) {
         // Transmittance multiplied into rgb (dst * src); alpha 1 - depth: of the nearest
         // translucent layer (MAX), or of the farthest (MIN); no depth writes.
         gl::PassState tintPass =
-            gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, static_cast<GLenum>(around ? GL_MIN : GL_MAX), GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
+            gl::PassState::depthOnly().withBlend({GL_FUNC_ADD, static_cast<GLenum>(farthest ? GL_MIN : GL_MAX), GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE});
         tintPass.depthWrite = false;
         tintProgram_.set("uTestOffset", translucentTestOffset(light));
         const ScopedScissor scissor(redraw);
@@ -310,7 +284,6 @@ void DepthAndTintMaps::redrawTint(const ShadowFrame& frame, LightMaps& m, std::s
         }
         frame.drawCasters(tintProgram_, *translucent);
     }
-    if (around) boundFarthestAround(m, face, redraw);
 }
 
 void DepthAndTintMaps::bind(bool rawDepth) const {

@@ -18,7 +18,6 @@
 #include "gl/Program.h"
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
-#include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 
@@ -68,16 +67,12 @@ public:
         // The drawn alpha (RG32F: 1 - the farthest layer's depth per texel, 1 - the farthest
         // entry's, transmit.frag), which the tint pass writes as its second target (tintFaces'
         // attachment 1; a cube map's faces through drawnFaceViews): translucent receivers read it
-        // (bind(), at ShadowSlots::drawnUnit) to divide their own layers out of the tint; under
-        // FarthestAround the bound of any texel's neighbours is made from it again when part of
-        // the tint is redrawn (boundTargets write the bound into the tint's face alone). Made with
-        // the map under FarthestAround; under NearestLayer in scenes with translucent casters
+        // (bind(), at ShadowSlots::drawnUnit) to divide their own layers out of the tint. Made with
+        // the map under FarthestLayer (CSSM); under NearestLayer in scenes with translucent casters
         // (ShadowFrame::translucentCasters; without, the plain techniques' maps go without its 8
         // bytes per texel).
         gl::Texture drawn;
         std::vector<gl::Texture> drawnFaceViews;
-        std::vector<gl::Texture> tintFaceViews;
-        std::vector<gl::Framebuffer> boundTargets;
     };
 
     // What the alpha of a tint texel holds.
@@ -89,12 +84,16 @@ public:
         // spot or projector tinted themselves (compare --translucent-receivers, default scene's
         // projector: 12.6 % of pixels wrong).
         NearestLayer,
-        // 1 - the farthest layer's window depth over the texel and its 8 neighbours (1: no layer).
-        // A bilinear fetch anywhere in a texel's footprint is then at most the least of the 2 x 2
-        // texels it blends, so one fetch tells whether a receiver lies behind every layer of
-        // them: alpha > 1 - its depth (CSSM's opaque receivers, which then need no per-texel
-        // test). Sampled bilinearly: rgb then blends the 2 x 2 products, white where no layer is.
-        FarthestAround,
+        // 1 - the farthest translucent layer's window depth (1: no layer), MIN-blended by the tint
+        // pass itself. A gather of the alpha under a receiver's bilinear fetch gives the 2 x 2
+        // texels that fetch blends, so their least tells whether the receiver lies behind every
+        // layer of them: least > 1 - its depth (CSSM's opaque receivers, colouredByTint, which then
+        // need no per-texel test). Sampled bilinearly: rgb blends the 2 x 2 products, white where
+        // no layer is. (Until stop 52 a pass of its own wrote each texel's least over its 3 x 3
+        // neighbours into the alpha, so that the bilinear fetch's alpha bounded the 2 x 2 by
+        // itself: 0.5 ms of the glass scene's shadow pass whenever its ball moved, against a gather
+        // in the lookup that costs nothing measurable.)
+        FarthestLayer,
     };
 
     // Passes that draw translucent casters over a light's opaque depth, tested and not written (the
@@ -148,21 +147,14 @@ private:
     // texels `changed` by animated casters; true when the maps drawn last frame are kept (the
     // same key), so that only translucentRedo is drawn again.
     bool keepTranslucent(LightMaps& maps, std::size_t face, std::uint64_t key, const TexelRect& changed);
-    // Clears the tint in `redraw` and draws the `translucent` casters (none: nullptr) there again,
-    // with their bound (FarthestAround).
+    // Clears the tint in `redraw` and draws the `translucent` casters (none: nullptr) there again.
     void redrawTint(const ShadowFrame& frame, LightMaps& maps, std::size_t face, const CasterSelection* translucent,
                     const TexelRect& redraw, const scene::Light& light);
-    // TintAlpha::FarthestAround, after the tint pass redrew `drawn` (and with it the drawn alpha):
-    // the tint's alpha becomes the drawn alpha's least over each texel's 3 x 3 neighbourhood
-    // wherever that reaches `drawn` (grown by one).
-    void boundFarthestAround(LightMaps& maps, std::size_t face, const TexelRect& drawn);
-    GLenum tintFilter() const { return tintAlpha_ == TintAlpha::FarthestAround ? GL_LINEAR : filter_; }
+    GLenum tintFilter() const { return tintAlpha_ == TintAlpha::FarthestLayer ? GL_LINEAR : filter_; }
     std::vector<LightMaps> maps_;
     ShadowSlots slots_;
     DepthCasterProgram depthProgram_;
     TintCasterProgram tintProgram_;
-    gl::Program farthestAround_;  // built with the first FarthestAround map
-    gl::VertexArray fullscreenVao_;
     gl::Sampler rawSampler_{GL_NEAREST, GL_NEAREST};  // reads depth maps without comparison
     GLenum filter_ = GL_NEAREST;
     bool withTint_ = true;

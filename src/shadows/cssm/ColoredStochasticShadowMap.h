@@ -91,7 +91,7 @@ private:
     PoissonDisk poisson_;
     // With tint maps where tintBehindAll() (renderMaps), whose alpha tells the lookup whether an
     // opaque receiver is behind every layer around it (lookup.glsl, colouredByTint).
-    DepthAndTintMaps depth_{/*withTint=*/false, DepthAndTintMaps::TintAlpha::FarthestAround};
+    DepthAndTintMaps depth_{/*withTint=*/false, DepthAndTintMaps::TintAlpha::FarthestLayer};
     std::vector<LightMap> maps_;
     gl::Program copy_, tiles_, nearestLayer_;
     std::optional<CasterProgramPair> casters_;  // buildCasters

@@ -191,10 +191,17 @@ TileSite tileSite(ShadowSite s, int side) {
     return ts;
 }
 
-// The tint map's texel under the receiver, bilinear (DepthAndTintMaps::TintAlpha::FarthestAround):
-// rgb the layers' transmittance product, white where none is; a at most 1 - the farthest layer's
-// depth over the 2 x 2 texels blended.
+// The tint map's texel under the receiver, bilinear (DepthAndTintMaps::TintAlpha::FarthestLayer):
+// rgb the layers' transmittance product, white where none is.
 vec4 tintAround(ShadowSite s) { return s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy); }
+// 1 - the farthest layer's depth, least over the 2 x 2 texels tintAround blends (1: no layer).
+// A cube face's texels within a texel of its edge give 0 ("a layer may be in front"): the fetch
+// there blends the next face's texels, whose depths are along another axis.
+float farthestAround(ShadowSite s, MapFace m) {
+    vec4 a = s.cube ? shadowTintAlphaGatherCube(s.slot, s.coord) : shadowTintAlphaGather2D(s.slot, s.coord.xy);
+    bool offFace = s.cube && (any(lessThan(m.texel, vec2(1.0))) || any(greaterThan(m.texel, vec2(s.resolution - 1.0))));
+    return offFace ? 0.0 : min(min(a.x, a.y), min(a.z, a.w));
+}
 
 // A receiver behind every layer written in the 2 x 2 tiles around it: the tint map's product (its
 // bilinear blend already weighs in the texels without a layer, as the own coverage would), or
@@ -224,26 +231,25 @@ void addTileCounts(TileSite ts, int side, int q, bool counted, bool missing, vec
     farthest = counted ? max(farthest, missing ? 2.0 : v.a) : farthest;
 }
 
-// Opaque receivers with tint_behind_all. One bilinear fetch of the tint map answers almost every
-// receiver: its alpha bounds 1 - the farthest layer's depth over the 2 x 2 texels it blends, so
-// alpha > 1 - depth means the receiver is behind every layer there, or no layer is there, and the
-// blended product is the answer (white without a layer). Elsewhere (in front of some layer: a
-// floor under a pane's foot, a receiver between panes) one loop, one fetch per pass, reads the
-// receiver's 2 x 2 texels for its own coverage, then counts its own tile's texels. llvmpipe runs
-// the loop's body once for every pixel even where no pass is due (see colouredByTiles): the whole
-// lookup then costs the tint fetch and one texel fetch, against a gather, the tiles' counts and
-// the tint in colouredByTiles (issue 15, llvmpipe, default scene: opaque pass 50.9 -> 43.5 ms,
-// cssm2 / hard frame 1.35 -> 1.20).
+// Opaque receivers with tint_behind_all. One bilinear fetch of the tint map and one gather of its
+// alpha answer almost every receiver: the least alpha is 1 - the farthest layer's depth over the
+// 2 x 2 texels the fetch blends (farthestAround), so least > 1 - depth means the receiver is
+// behind every layer there, or no layer is there, and the blended product is the answer (white
+// without a layer). Elsewhere (in front of some layer: a floor under a pane's foot, a receiver
+// between panes) one loop, one fetch per pass, reads the receiver's 2 x 2 texels for its own
+// coverage, then counts its own tile's texels. llvmpipe runs the loop's body once for every pixel
+// even where no pass is due (see colouredByTiles): the whole lookup then costs the tint fetch, the
+// gather and one texel fetch, against a gather, the tiles' counts and the tint in colouredByTiles
+// (issue 15, llvmpipe, default scene: opaque pass 50.9 -> 43.5 ms, cssm2 / hard frame 1.35 -> 1.20).
 vec3 colouredByTint(ShadowSite s, int side) {
     vec4 tint = tintAround(s);
-    // The half-float alpha (1 - depth) rounds by up to 2^-11 of itself, and a bilinear blend of
-    // bounds is at most their least: a receiver within 2^-10 of (1 - its depth) behind the farthest
-    // layer is counted instead (and within 2^-23, half floats' subnormal steps, right at the far
-    // plane). Relative, not absolute: a perspective light's 1 - depth is small far from it, and
+    MapFace m = mapFace(s);
+    // The half-float alpha (1 - depth) rounds by up to 2^-11 of itself: a receiver within 2^-10 of
+    // (1 - its depth) behind the farthest layer is counted instead (and within 2^-23, half floats'
+    // subnormal steps, right at the far plane). Relative, not absolute: a perspective light's 1 - depth is small far from it, and
     // 2^-10 of window depth is 0.85 m on scenes/glass.json's floor, 6.6 m from its spot (near
     // 0.05, far 20), so the floor that close behind each pane counted texels for nothing.
-    bool behindEveryLayer = tint.a > (1.0 - s.depth) * (1.0 + 1.0 / 1024.0) + 1.0 / 8388608.0;
-    MapFace m = mapFace(s);
+    bool behindEveryLayer = farthestAround(s, m) > (1.0 - s.depth) * (1.0 + 1.0 / 1024.0) + 1.0 / 8388608.0;
     vec2 t = m.texel - 0.5;
     vec2 f = fract(t);
     vec2 footprint = floor(t) + 0.5;  // the centre of the first of the 2 x 2 texels

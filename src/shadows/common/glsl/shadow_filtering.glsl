@@ -189,7 +189,8 @@ vec2 lookupTexel(ShadowSite s, out int face) {
 // `centre`: between the four, in texels), and (bilinearThroughOwnLayers) the tint there weighed
 // bilinearly after the division, so that a receiver's rim, where texels with and without
 // its own layer meet, is exact too. A texel whose layers are not known gives its product where the
-// receiver is behind its nearest layer (tint alpha, NearestLayer), else 1.
+// receiver is behind its nearest layer (tint alpha, NearestLayer: pcf-bilinear) or its farthest
+// (FarthestLayer: CSSM), else 1.
 vec4 ownLayersAround(ShadowSite s, out vec2 texel, out vec2 centre) {
     int face;
     texel = lookupTexel(s, face);

@@ -48,6 +48,17 @@ mat4 shadowTintGatherCube(int slot, vec3 dir) {
     SLOT_SWITCH_2(S)
 #undef S
 }
+// The tint's alpha at the 2 x 2 texels a bilinear fetch at uv (dir) blends, in gather order.
+vec4 shadowTintAlphaGather2D(int slot, vec2 uv) {
+#define S(i) textureGather(uShadowTint[i], uv, 3)
+    SLOT_SWITCH_4(S)
+#undef S
+}
+vec4 shadowTintAlphaGatherCube(int slot, vec3 dir) {
+#define S(i) textureGather(uShadowTintCube[i], dir, 3)
+    SLOT_SWITCH_2(S)
+#undef S
+}
 vec4 shadowTintCube(int slot, vec3 dir) {
 #define S(i) textureLod(uShadowTintCube[i], dir, 0.0)
     SLOT_SWITCH_2(S)
