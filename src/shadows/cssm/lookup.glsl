@@ -192,8 +192,9 @@ TileSite tileSite(ShadowSite s, int side) {
 }
 
 // The tint map's texel under the receiver, bilinear (DepthAndTintMaps::TintAlpha::FarthestLayer):
-// rgb the layers' transmittance product, white where none is.
-vec4 tintAround(ShadowSite s) { return s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy); }
+// the layers' transmittance product, white where none is. Its alpha is left out: blended, it bounds
+// nothing (farthestAround takes the least of the 2 x 2 instead).
+vec3 tintAround(ShadowSite s) { return (s.cube ? shadowTintCube(s.slot, s.coord) : shadowTint2D(s.slot, s.coord.xy)).rgb; }
 // 1 - the farthest layer's depth, least over the 2 x 2 texels tintAround blends (1: no layer).
 // A cube face's texels within a texel of its edge give 0 ("a layer may be in front"): the fetch
 // there blends the next face's texels, whose depths are along another axis.
@@ -207,7 +208,7 @@ float farthestAround(ShadowSite s, MapFace m) {
 // bilinear blend already weighs in the texels without a layer, as the own coverage would), or
 // the tiles' counts blended and weighted by the own coverage.
 vec3 behindAll(ShadowSite s, TileSite ts, vec3 passing, float covered) {
-    return kTintBehindAll ? tintAround(s).rgb : mix(vec3(1.0), passing / covered, ts.own);
+    return kTintBehindAll ? tintAround(s) : mix(vec3(1.0), passing / covered, ts.own);
 }
 
 // Tile q (0-3) of the 2 x 2 around the receiver, and whether its counts are outside the level.
@@ -242,7 +243,7 @@ void addTileCounts(TileSite ts, int side, int q, bool counted, bool missing, vec
 // gather and one texel fetch, against a gather, the tiles' counts and the tint in colouredByTiles
 // (issue 15, llvmpipe, default scene: opaque pass 50.9 -> 43.5 ms, cssm2 / hard frame 1.35 -> 1.20).
 vec3 colouredByTint(ShadowSite s, int side) {
-    vec4 tint = tintAround(s);
+    vec3 tint = tintAround(s);
     MapFace m = mapFace(s);
     // The half-float alpha (1 - depth) rounds by up to 2^-11 of itself: a receiver within 2^-10 of
     // (1 - its depth) behind the farthest layer is counted instead (and within 2^-23, half floats'
@@ -269,7 +270,7 @@ vec3 colouredByTint(ShadowSite s, int side) {
         own += footprintPass && v.a < ownDepth ? w : 0.0;
         acc += footprintPass ? vec4(0.0) : ownTexelCount(s, m, texel, v);
     }
-    if (behindEveryLayer) return tint.rgb;
+    if (behindEveryLayer) return tint;
     return mix(vec3(1.0), acc.w > 0.0 ? acc.rgb / acc.w : vec3(1.0), own);
 }
 
@@ -325,7 +326,7 @@ bool decidedThroughOwnLayers(ShadowSite s, out vec3 light) {
     vec2 texel, centre;
     vec4 own = ownLayersAround(s, texel, centre);
     float layers = all(equal(own, own.xxxx)) ? own.x : -1.0;
-    light = throughOwnLayers(tintAround(s).rgb, layers);
+    light = throughOwnLayers(tintAround(s), layers);
     return ownLayersDividable(layers);
 }
 
@@ -439,7 +440,7 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // tintFootprintNotBehind; ColoredStochasticShadowMap::behindLayersBuild): colouredByTint's
     // behindEveryLayer holds, so the tint's product is its answer, without the fallback loop
     // that llvmpipe would run masked for every pixel.
-    return compareAt(s, vec2(0.0), 0.0) * tintAround(s).rgb;
+    return compareAt(s, vec2(0.0), 0.0) * tintAround(s);
 #endif
     vec3 sum = vec3(0.0);
     int n;
