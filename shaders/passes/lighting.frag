@@ -116,7 +116,14 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
     vec3 L;
     vec3 radiance = incidentRadiance(i, P, L);
     float NdotL = dot(N, L);
+#ifdef UNSHADOWED_LIGHTS
+    // No other caster's shadow falls on the pixels this build shades (Renderer's shadow reach): the
+    // map holds the receiver itself or what lies behind it, and the lookup would answer 1.
+    vec3 visibility = vec3(1.0);
+    if (((UNSHADOWED_LIGHTS >> uint(i)) & 1u) == 0u) visibility = shadowVisibility(i, P, N, NdotL);
+#else
     vec3 visibility = shadowVisibility(i, P, N, NdotL);
+#endif
 #ifdef DEBUG_OUTPUT
     if (i == uDebugLight) sum.debugVisibility = visibility;
 #endif

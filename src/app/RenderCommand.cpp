@@ -42,6 +42,7 @@ static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
             {"translucent_behind_layers_draws", t.translucentBehindLayers},
             {"translucent_split_draws", t.translucentSplit},
             {"unlit_pieces", t.unlitPieces},
+            {"unshadowed_pieces", t.unshadowedPieces},
             {"footprints_made", t.footprintsMade},
             {"cpu_ms", t.cpuMs}};
 }

@@ -43,7 +43,10 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
             meshes_[meshIndex].flatOrConvexParts[p] = meshes_[meshIndex].closedParts[p] ? scene.meshes[meshIndex].partIsConvex(p)
                                                                                         : scene.meshes[meshIndex].partIsFlat(p);
     }
-    for (const auto& img : scene.images) images_.push_back(uploadImage(img, anisotropy));
+    for (const auto& img : scene.images) {
+        images_.push_back(uploadImage(img, anisotropy));
+        translucentAlpha_.push_back(img.hasTranslucentAlpha());
+    }
 }
 
 void GpuScene::setAnisotropy(float anisotropy) {
@@ -60,12 +63,13 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
         for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
             const scene::Material& mat = scene_.material(obj, mesh.parts[p]);
             const bool textureAlpha = mat.diffuseTexture >= 0 && mat.alphaCutoff <= 0 &&
-                                      scene_.images[static_cast<std::size_t>(mat.diffuseTexture)].hasTranslucentAlpha();
+                                      translucentAlpha_[static_cast<std::size_t>(mat.diffuseTexture)];
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
             d.moving = !obj.animation.empty();
             // A mirroring transform turns the winding inside out; such parts are drawn whole.
             d.solid = meshes_[meshIndex].closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
             d.ownLayersKnown = meshes_[meshIndex].flatOrConvexParts[p] && (!meshes_[meshIndex].closedParts[p] || mat.diffuseTexture < 0);
+            d.flat = meshes_[meshIndex].flatOrConvexParts[p] && !meshes_[meshIndex].closedParts[p];
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

@@ -32,6 +32,9 @@ struct Draw {
     // ray to a light it crosses at most its own face and that solid's other one, the layers a
     // translucent receiver's lookup divides out (ownLayersFrom, shadow_filtering.glsl).
     bool ownLayersKnown = false;
+    // The part is flat (Mesh::partIsFlat) and bounds no solid: it cannot shadow itself, so a light's
+    // map holds it, where nothing else is in front, at its own depth (Renderer's shadow reach).
+    bool flat = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)
     std::size_t triangles = 0;
@@ -74,6 +77,9 @@ private:
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;
     std::vector<gl::Texture> images_;
+    // Per image, as uploaded: some texel's alpha is below 1 (scene::Image::hasTranslucentAlpha, a
+    // scan of every texel: once per frame it cost the default scene's cow ~1 ms of CPU).
+    std::vector<bool> translucentAlpha_;
     mutable gl::Buffer sortedIndices_;  // streaming index buffer for drawTrianglesSorted
 };
 

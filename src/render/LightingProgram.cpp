@@ -33,10 +33,11 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
     of(first);
 }
 
-const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint, unsigned unlit) {
+const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint, unsigned unlit,
+                                        unsigned unshadowed) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    gl::Program& build =
-        builds_[(untextured ? 1u : 0u) + (translucent ? 2u : 0u) + (alphaTested ? 4u : 0u) + 8u * static_cast<unsigned>(tint) + 24u * unlit];
+    const unsigned key = (untextured ? 1u : 0u) + (translucent ? 2u : 0u) + (alphaTested ? 4u : 0u) + 8u * static_cast<unsigned>(tint) + 24u * unlit;
+    gl::Program& build = builds_[key + (std::uint64_t{unshadowed} << 32)];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;
         if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
@@ -45,6 +46,7 @@ const gl::Program& LightingPrograms::of(const scene::Material& material, bool tr
         if (tint == TintLookup::Untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
         if (tint == TintLookup::BehindLayers) defines.emplace_back("RECEIVER_BEHIND_LAYERS 1");
         if (unlit != 0) defines.emplace_back("SKIPPED_LIGHTS " + std::to_string(unlit) + "u");
+        if (unshadowed != 0) defines.emplace_back("UNSHADOWED_LIGHTS " + std::to_string(unshadowed) + "u");
         build = buildLightingProgram(lookup_, defines);
     }
     return build;

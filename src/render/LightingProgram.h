@@ -7,6 +7,7 @@
 #include "gpu/ShaderContract.h"
 #include "scene/Material.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -51,9 +52,10 @@ public:
     // `translucent`: the surface is drawn in the translucent pass (render::Draw::translucent).
     // `tint`: what the pixels it shades need of the coloured shadows. `unlit`: a bit per light
     // that reaches none of the pixels shaded (SKIPPED_LIGHTS; Renderer's light reach): the build
-    // leaves those lights out.
+    // leaves those lights out. `unshadowed`: a bit per light whose shadow reaches none of them
+    // (UNSHADOWED_LIGHTS; Renderer's shadow reach): the build shades those lights without a lookup.
     const gl::Program& of(const scene::Material& material, bool translucent = false, TintLookup tint = TintLookup::Whole,
-                          unsigned unlit = 0);
+                          unsigned unlit = 0, unsigned unshadowed = 0);
     template <class F>
     void forEachBuilt(F&& f) const {
         for (const auto& [key, p] : builds_)
@@ -63,8 +65,9 @@ public:
 private:
     std::filesystem::path lookup_;
     std::vector<std::string> defines_;
-    // Keyed by untextured + 2 translucent + 4 alpha-tested + 8 TintLookup + 24 unlit lights.
-    std::map<unsigned, gl::Program> builds_;
+    // Keyed by untextured + 2 translucent + 4 alpha-tested + 8 TintLookup + 24 unlit lights, and
+    // the unshadowed lights in the upper 32 bits.
+    std::map<std::uint64_t, gl::Program> builds_;
 };
 
 }  // namespace penumbra::render

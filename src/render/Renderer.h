@@ -90,6 +90,12 @@ struct RenderOptions {
     // leaves that light out: the same pixels, without its picture and shadow lookup there. false
     // (`--light-everywhere`) shades every light everywhere, for measuring what it saves.
     bool lightOnlyWhereReached = true;
+    // Shade the screen rectangles of an opaque receiver that no other caster's shadow volume reaches
+    // (render/TintReach.h, shadowFootprint) with a lighting program that leaves that light's shadow
+    // lookup out, where the technique bounds how far its lookup reads (ShadowTechnique::
+    // shadowReachTexels): the same pixels, without the lookup where it would answer 1. false
+    // (`--shadow-everywhere`) looks every shadow up on every pixel, for measuring what it saves.
+    bool shadowOnlyWhereCast = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
     // (render/SrgbTarget.h) wherever the frame allows it (shaded output, sorted transparency):
@@ -156,6 +162,7 @@ public:
         std::size_t translucentUntinted = 0, translucentBehindLayers = 0, translucentSplit = 0;  // translucent receivers (ShadowTechnique::ownLayersBuild)
         double cpuMs = 0.0;  // the footprints and rectangles' CPU time (render/TintReach.h)
         std::size_t unlitPieces = 0;  // pieces drawn with a light left out (addLightReach), both passes
+        std::size_t unshadowedPieces = 0;  // pieces drawn with a light's shadow lookup left out (addShadowReach)
         // Tint footprints (per receiver, caster and light) and lights' reaches (per draw and light),
         // each with its cells, worked out this frame rather than kept from the last (FrameMemo: a
         // still scene works out none after its first frame but a sun's when the camera moves, as
@@ -181,9 +188,12 @@ private:
     };
     // Where each light whose frustum bounds its light (a projector, a spot) reaches a draw's
     // pixels (render/TintReach.h, lightReach): the light's bit and that rectangle of the draw's own.
+    // Or, with `shadowOnly`, where the light's shadow may fall on them (addShadowReach): outside,
+    // the light is shaded without its lookup.
     struct LightReach {
         unsigned bit = 0;
-        std::vector<PixelRect> rects;  // the light reaches no pixel of the draw outside these
+        std::vector<PixelRect> rects;  // the light (its shadow) reaches no pixel of the draw outside these
+        bool shadowOnly = false;
     };
     struct DrawReach {
         PixelRect own;                   // the draw's pixels
@@ -195,11 +205,12 @@ private:
         bool scissored = false;           // a column range scissors them (render's `columns`)
         std::vector<DrawReach> reach;     // per draw (addLightReach); empty: every light everywhere
     };
-    // A rectangle of a draw's pixels, the lookup it needs and the lights that reach none of it.
+    // A rectangle of a draw's pixels, the lookup it needs, the lights that reach none of it and
+    // those whose shadows reach none of it.
     struct Piece {
         PixelRect rect;
         TintLookup lookup = TintLookup::Whole;
-        unsigned unlit = 0;
+        unsigned unlit = 0, unshadowed = 0;
     };
     // `area`: the pixels of the width x height frame the camera passes draw (a column range).
     TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
@@ -208,6 +219,9 @@ private:
     // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
     void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                        int width, int height) const;
+    // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
+    void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
+                        int width, int height) const;
     // The pieces a draw is drawn in: the tint split's rectangles, or its own, each cut by the
     // lights' reach; empty where the draw is drawn whole with `lookup` and every light.
     std::vector<Piece> piecesOf(const TintSplit* split, std::size_t draw) const;
@@ -242,6 +256,7 @@ private:
     // (render/FrameMemo.h): kept while those stay put.
     mutable FrameMemo<FootprintCells> footprintCells_;
     mutable FrameMemo<std::vector<scene::Bounds>> reachCells_;
+    mutable FrameMemo<std::vector<scene::Bounds>> shadowCells_;  // per receiver, caster and light (addShadowReach)
     std::vector<bool> ownObjects_;  // setReceivers; empty: all
     bool ownPixelsOnly_ = false;
     // Depth of the pre-pass / of another renderer's objects: the shadow passes' caster programs,

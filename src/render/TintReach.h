@@ -60,6 +60,16 @@ void cellsOf(const Cut& cut, const scene::Bounds& box, int levels, Emit&& emit) 
 // the receiver's depth past its own.)
 scene::Bounds tintFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels);
 
+// The part of `receiver` that light `light` may shadow through any caster inside `caster`, opaque
+// or translucent: tintFootprint's box. It holds the receiver's points whose ray from the light
+// passes within `padTexels` texels of the caster's box, on either side of it, so it does not depend
+// on how the lookup compares depths. Off every other caster's, a receiver's lookup reads the map
+// where it holds the receiver itself or what lies behind it (Renderer's shadow reach).
+inline scene::Bounds shadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
+                                     float padTexels) {
+    return tintFootprint(light, caster, receiver, padTexels);
+}
+
 // How near a receiver may come to a caster's layers before it counts as on their side: a lookup
 // that compares its biased depth with the layers (Lookup: an opaque receiver's tint product, whose
 // bias lands it in front of its geometry), or one that places the receiver by its own surface

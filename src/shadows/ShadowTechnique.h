@@ -184,6 +184,14 @@ public:
     // translucent caster's shadow reaches with a program that reads none (render/TintReach.h).
     // Default: the bilinear tint at the receiver (tintAt in shadow_filtering.glsl).
     virtual float tintReachTexels() const { return 2.0f; }
+    // How far from a receiver's own texel, in texels of its light's map, any caster, opaque or
+    // translucent, can make the lookup's answer other than exactly 1 (lit); normal offset not
+    // counted. The renderer shades the screen rectangles of opaque receivers that no other caster's
+    // shadow volume reaches with a build that leaves the light's lookup out (UNSHADOWED_LIGHTS:
+    // Renderer's shadow reach): there the map holds the receiver itself, flat, or what lies behind
+    // it. Negative (the default) where that is not bounded by the light's map, or where the
+    // answer may be below 1 with no caster near (moment maps' light bleeding and variance floor).
+    virtual float shadowReachTexels() const { return -1.0f; }
     // Whether the lookup has a cheaper build for receivers behind every translucent layer around
     // them (RECEIVER_BEHIND_LAYERS), giving the same pixels there: CSSM's tint product without its
     // fallback loop. The renderer draws with it where render/TintReach.h shows every caster whose

@@ -43,6 +43,9 @@ public:
     void renderMaps(const ShadowFrame& frame) override;
     std::vector<std::string> lookupDefines() const override;
     float tintReachTexels() const override;
+    // With the opaque casters in a map of their own, its hard compare and the coloured term, exactly
+    // 1 beyond the tint's reach; without, the colour map holds them too.
+    float shadowReachTexels() const override { return tintReachTexels() < 0.0f ? -1.0f : std::max(2.0f, tintReachTexels()); }
     bool behindLayersBuild() const override { return tintBehindAll(); }  // (tiles need the separate opaque map)
     bool ownLayersBuild() const override { return tintBehindAll(); }
     void bindLookup(const gl::Program& lighting) const override;

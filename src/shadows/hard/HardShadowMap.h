@@ -12,6 +12,8 @@ public:
     // Glass receivers with every other layer on one side of them (ShadowTechnique::ownLayersBuild):
     // builds that read their own layers in front alone, or divide them out of the tint.
     bool ownLayersBuild() const override { return true; }
+    // The texel the comparison reads, and the tint's.
+    float shadowReachTexels() const override { return 2.0f; }
     void bindLookup(const gl::Program&) const override { maps_.bind(); }
 };
 

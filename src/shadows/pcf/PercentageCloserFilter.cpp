@@ -61,6 +61,14 @@ std::vector<std::string> PercentageCloserFilter::lookupDefines() const {
     return defines;
 }
 
+// The farthest tap in any direction (tapReach's along x or y, times the diagonal's sqrt 2; a
+// radius in world units is bounded by no count of texels) and its compare's texels.
+float PercentageCloserFilter::shadowReachTexels() const {
+    if (kernel_ == Kernel::Bilinear) return 2.0f;
+    if (radiusWorld_ > 0.0f) return -1.0f;
+    return radiusTexels_ * std::sqrt(2.0f) * tapReach() + 2.0f;
+}
+
 // How far, along x or y, the kernel's taps reach in units of its radius: tapsAgree() bounds the
 // texels within that of the receiver, and bounds over a smaller box are tighter.
 float PercentageCloserFilter::tapReach() const {

@@ -22,6 +22,7 @@ public:
     std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return KernelTechnique::memoryBytes() + jitter_.memoryBytes(); }
+    float shadowReachTexels() const override;
 
 protected:
     std::vector<Parameter> declareParameters() override;

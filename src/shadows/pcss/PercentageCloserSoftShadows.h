@@ -11,6 +11,9 @@ public:
     std::string name() const override { return "pcss"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/pcss/lookup.glsl"; }
     void bindLookup(const gl::Program& lighting) const override;
+    // The search and the filter reach no farther than their radius cap (with the lookup's 1 %
+    // rounding), and each tap's compare a texel more.
+    float shadowReachTexels() const override { return maxRadius_ * 1.01f + 2.0f; }
 
 protected:
     std::vector<Parameter> declareParameters() override;
