@@ -28,7 +28,8 @@ namespace penumbra::app {
 // (behind every layer that may reach them), or split on the screen; and how many translucent draws
 // met none but their own layers (ShadowTechnique::ownLayersBuild), whole or split; how many pieces
 // of draws left out a projector or spot light that cannot reach them (RenderOptions::
-// lightOnlyWhereReached); how many footprints and reaches it worked out rather than kept from the
+// lightOnlyWhereReached), and of opaque draws without the lookup of a light whose shadow cannot
+// fall on them (shadowOnlyWhereCast); how many footprints and reaches it worked out rather than kept from the
 // last frame; and the CPU milliseconds the choice took.
 static nlohmann::json tintShadingJson(const render::Renderer::TintShading& t) {
     return {{"whole_draws", t.whole},
