@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <dlfcn.h>
 #include <execinfo.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -138,6 +139,13 @@ MaskComparison compareMasks(const std::vector<bool>& expected, const std::vector
             c.mismatchesAwayFromEdges += !nearEdge;
         }
     return c;
+}
+
+std::size_t differingPixels(const std::vector<float>& a, const std::vector<float>& b, float tolerance) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 4)
+        count += std::abs(a[i] - b[i]) > tolerance || std::abs(a[i + 1] - b[i + 1]) > tolerance || std::abs(a[i + 2] - b[i + 2]) > tolerance;
+    return count;
 }
 
 }  // namespace penumbra::test

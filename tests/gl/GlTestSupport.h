@@ -60,4 +60,8 @@ struct MaskComparison {
 MaskComparison compareMasks(const std::vector<bool>& expected, const std::vector<bool>& rendered, int width, int height,
                             int tolerancePx);
 
+// The pixels of two linear RGBA pictures of one size (Renderer::readLinear) whose red, green or
+// blue differ by more than `tolerance`: the same-pixels checks of renderers that draw less.
+std::size_t differingPixels(const std::vector<float>& a, const std::vector<float>& b, float tolerance = 1e-6f);
+
 }  // namespace penumbra::test
