@@ -809,27 +809,40 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
     const float reach = technique_->shadowReachTexels();
     // Debug channels show every lookup (compare scores the visibility output as it always was).
     if (!options_.shadowOnlyWhereCast || reach < 0.0f || options_.output != OutputMode::Shaded) return;
-    std::vector<std::size_t> casters;
+    // Every caster the maps hold, seen or not, with the digest of its box (the memo's keys combine
+    // digests: a scene of 190 draws hashed the light and both boxes anew for every pair, 4 ms a frame).
+    struct Caster {
+        std::size_t draw;
+        OrientedBox box;
+        std::uint64_t key;
+    };
+    std::vector<Caster> casters;
     for (std::size_t i = 0; i < draws.size(); ++i)
-        if (draws[i].castsShadow) casters.push_back(i);  // seen or not: every caster the maps hold
+        if (draws[i].castsShadow) {
+            const OrientedBox box(draws[i].meshBounds, draws[i].model);
+            casters.push_back({i, box, util::Digest().add(box.corners).value()});
+        }
+    std::vector<std::uint64_t> lightKeys;
+    for (int l = 0; l < block.count.x; ++l) lightKeys.push_back(util::Digest().add(block.lights[l]).value());
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Draw& d = draws[i];
         if (!d.visible || d.translucent || !ownObject(d.object)) continue;
         const PixelRect own = switchedRect(d, viewProj, width, height, split.area, kLeastSwitchedShare);
         if (own.empty()) continue;
         const OrientedBox receiver(d.meshBounds, d.model);
+        const std::uint64_t receiverKey = util::Digest().add(receiver.corners).value();
         const bool byCells = d.triangles <= kSplitTriangles;
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // no map, no lookup
             const float pad = reach + light.shadow.z + 2.0f;  // as footprintsOf's: the normal offset and rounding
             std::vector<PixelRect> rects;
-            for (std::size_t c : casters) {
-                if (c == i && d.flat) continue;  // a flat part does not shadow itself
-                const OrientedBox caster(draws[c].meshBounds, draws[c].model);
+            for (const Caster& c : casters) {
+                if (c.draw == i && d.flat) continue;  // a flat part does not shadow itself
+                const OrientedBox& caster = c.box;
                 bool made = false;
-                std::vector<scene::Bounds>& cells =
-                    shadowCells_.at(util::Digest().add(light, caster.corners, receiver.corners, pad, byCells).value(), made);
+                std::vector<scene::Bounds>& cells = shadowCells_.at(
+                    util::Digest().add(lightKeys[static_cast<std::size_t>(l)], c.key, receiverKey, pad, byCells).value(), made);
                 if (made) {
                     const scene::Bounds whole = shadowFootprint(light, caster, receiver, pad);
                     const auto add = [&cells](const scene::Bounds& part) { cells.push_back(part); };
