@@ -470,16 +470,46 @@ namespace {
 // The grid the not-behind rectangles are grown to (pixels).
 constexpr int kSnap = 32;
 
-// `rects` grown to a grid of kSnap pixels, within `own`, without those another one contains: the
-// footprints' cells come many and overlapping, and grown so they share edges and merge into few runs.
+// The union of `rects` grown to a grid of kSnap pixels, within `own`, as few rectangles: the grid
+// cells any of them touches, in runs along each row of cells, a run continuing the one above it
+// where it spans the same cells. The footprints' cells come many and overlapping (thousands over
+// scenes/street.json's ground, where keeping only rectangles no other one contains took 2 ms a
+// frame).
 std::vector<PixelRect> snapped(const PixelRect& own, const std::vector<PixelRect>& rects) {
-    std::vector<PixelRect> grown;
+    if (own.empty() || rects.empty()) return {};
+    const int cx0 = own.x0 / kSnap, cy0 = own.y0 / kSnap, cols = (own.x1 + kSnap - 1) / kSnap - cx0,
+              rows = (own.y1 + kSnap - 1) / kSnap - cy0;
+    std::vector<char> touched(static_cast<std::size_t>(cols * rows), 0);
     for (const PixelRect& r : rects) {
-        const PixelRect g = PixelRect{r.x0 / kSnap * kSnap, r.y0 / kSnap * kSnap, (r.x1 + kSnap - 1) / kSnap * kSnap,
-                                      (r.y1 + kSnap - 1) / kSnap * kSnap}.intersected(own);
-        if (std::none_of(grown.begin(), grown.end(), [&](const PixelRect& s) { return s.contains(g); })) grown.push_back(g);
+        const PixelRect in = r.intersected(own);
+        if (in.empty()) continue;
+        for (int y = in.y0 / kSnap; y <= (in.y1 - 1) / kSnap; ++y)
+            for (int x = in.x0 / kSnap; x <= (in.x1 - 1) / kSnap; ++x) touched[static_cast<std::size_t>((y - cy0) * cols + x - cx0)] = 1;
     }
-    return grown;
+    std::vector<PixelRect> runs;
+    std::vector<std::size_t> above, current;  // indices into runs of the last row's runs, this row's
+    for (int y = 0; y < rows; ++y) {
+        current.clear();
+        for (int x = 0; x < cols;) {
+            if (!touched[static_cast<std::size_t>(y * cols + x)]) {
+                ++x;
+                continue;
+            }
+            const int first = x;
+            while (x < cols && touched[static_cast<std::size_t>(y * cols + x)]) ++x;
+            const PixelRect run = PixelRect{(cx0 + first) * kSnap, (cy0 + y) * kSnap, (cx0 + x) * kSnap, (cy0 + y + 1) * kSnap}.intersected(own);
+            const auto same = std::find_if(above.begin(), above.end(), [&](std::size_t i) { return runs[i].x0 == run.x0 && runs[i].x1 == run.x1; });
+            if (same != above.end()) {
+                runs[*same].y1 = run.y1;
+                current.push_back(*same);
+            } else {
+                current.push_back(runs.size());
+                runs.push_back(run);
+            }
+        }
+        above.swap(current);
+    }
+    return runs;
 }
 
 using RectsByLookup = std::array<std::vector<PixelRect>, 3>;  // TintLookup's order
