@@ -59,11 +59,19 @@ TEST_P(ShadowReach, ShadesEveryPixelAsLookingEveryShadowUpDoes) {
     EXPECT_GT(reached.unshadowedPieces, 0u) << "the ground is split where no shadow falls";
     EXPECT_EQ(everywhere.unshadowedPieces, 0u);
     ASSERT_EQ(reached.picture.size(), everywhere.picture.size());
-    std::size_t shadowed = 0;
-    for (std::size_t i = 0; i < everywhere.picture.size(); i += 4)
-        shadowed += everywhere.picture[i] + everywhere.picture[i + 1] + everywhere.picture[i + 2] < 0.6f ? 1 : 0;
+    // Shadows and lit ground both in view (a black or blank frame would be the same both ways too):
+    // pixels the shadows darken against the same scene without shadows, and pixels well lit.
+    const Shaded unshadowed = shade(s, "none", false);
+    std::size_t shadowed = 0, lit = 0;
+    for (std::size_t i = 0; i < everywhere.picture.size(); i += 4) {
+        const float sum = everywhere.picture[i] + everywhere.picture[i + 1] + everywhere.picture[i + 2];
+        const float sumUnshadowed = unshadowed.picture[i] + unshadowed.picture[i + 1] + unshadowed.picture[i + 2];
+        shadowed += sumUnshadowed - sum > 0.1f ? 1 : 0;
+        lit += sum > 1.5f ? 1 : 0;
+    }
     EXPECT_EQ(differingPixels(reached.picture, everywhere.picture), 0u) << GetParam();
     EXPECT_GT(shadowed, 2000u) << GetParam() << ": shadows are in view";
+    EXPECT_GT(lit, 20000u) << GetParam() << ": lit ground is in view";
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReach,
