@@ -30,6 +30,7 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         g.vao.attribute(2, 0, 2, offsetof(scene::Vertex, uv));
         g.closedParts.assign(mesh.parts.size(), false);
         g.flatOrConvexParts.assign(mesh.parts.size(), false);
+        g.faceNormalParts.assign(mesh.parts.size(), false);
         meshes_.push_back(std::move(g));
     }
     // Each mesh once, however many objects draw it, and none that no object draws.
@@ -39,9 +40,11 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         if (judged[meshIndex]) continue;
         judged[meshIndex] = true;
         meshes_[meshIndex].closedParts = scene.meshes[meshIndex].closedParts();
-        for (std::size_t p = 0; p < scene.meshes[meshIndex].parts.size(); ++p)
+        for (std::size_t p = 0; p < scene.meshes[meshIndex].parts.size(); ++p) {
             meshes_[meshIndex].flatOrConvexParts[p] = meshes_[meshIndex].closedParts[p] ? scene.meshes[meshIndex].partIsConvex(p)
                                                                                         : scene.meshes[meshIndex].partIsFlat(p);
+            meshes_[meshIndex].faceNormalParts[p] = meshes_[meshIndex].flatOrConvexParts[p] && scene.meshes[meshIndex].partHasFaceNormals(p);
+        }
     }
     for (const auto& img : scene.images) {
         images_.push_back(uploadImage(img, anisotropy));
@@ -69,7 +72,8 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             // A mirroring transform turns the winding inside out; such parts are drawn whole.
             d.solid = meshes_[meshIndex].closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
             d.ownLayersKnown = meshes_[meshIndex].flatOrConvexParts[p] && (!meshes_[meshIndex].closedParts[p] || mat.diffuseTexture < 0);
-            d.flat = meshes_[meshIndex].flatOrConvexParts[p] && !meshes_[meshIndex].closedParts[p];
+            const GpuMesh& g = meshes_[meshIndex];
+            d.selfShadowFree = g.flatOrConvexParts[p] && (!g.closedParts[p] || (d.solid && g.faceNormalParts[p]));
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

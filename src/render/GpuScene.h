@@ -32,9 +32,13 @@ struct Draw {
     // ray to a light it crosses at most its own face and that solid's other one, the layers a
     // translucent receiver's lookup divides out (ownLayersFrom, shadow_filtering.glsl).
     bool ownLayersKnown = false;
-    // The part is flat (Mesh::partIsFlat) and bounds no solid: it cannot shadow itself, so a light's
-    // map holds it, where nothing else is in front, at its own depth (Renderer's shadow reach).
-    bool flat = false;
+    // The part shadows none of its own points that a light lights (N.L > 0), so a light's map holds
+    // it, where nothing else is in front, at their own depth (Renderer's shadow reach). Either it is
+    // flat (Mesh::partIsFlat) and bounds no solid, or it is a solid (above) whose surface is convex
+    // and shaded with its faces' own normals (Mesh::partIsConvex, partHasFaceNormals): a ray to the
+    // light from a face turned to it leaves the solid for good, and a face turned away has N.L <= 0.
+    // The solid's case holds seen from outside only (its inner faces lit through it otherwise).
+    bool selfShadowFree = false;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)
     std::size_t triangles = 0;
@@ -73,6 +77,8 @@ private:
         std::vector<bool> closedParts;
         // Per part: it is flat, or it bounds a convex solid (Mesh::partIsFlat, partIsConvex).
         std::vector<bool> flatOrConvexParts;
+        // Per part: its vertex normals are its faces' (Mesh::partHasFaceNormals).
+        std::vector<bool> faceNormalParts;
     };
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;

@@ -5,6 +5,7 @@
 #include "gpu/ShaderContract.h"
 #include "render/LightBlock.h"
 #include "render/LightingProgram.h"
+#include "render/MeshClusters.h"
 #include "util/Digest.h"
 #include "util/Log.h"
 
@@ -829,14 +830,16 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
 }
 
 // Where no other caster's shadow volume reaches an opaque receiver, a light's map holds the
-// receiver itself (flat: Draw::flat) or what lies behind it, and its lookup answers exactly 1; yet
-// llvmpipe runs that lookup, masked, for every pixel. The receiver's pixels off every caster's
-// footprint (render/TintReach.h, shadowFootprint, padded by the technique's shadowReachTexels and
-// the normal offset) are shaded with a build that leaves the lookup out. Measured on the default
-// scene: see docs/measurements.md, stop 53.
+// receiver itself (one that shadows none of its own lit points: Draw::selfShadowFree) or what lies
+// behind it, and its lookup answers exactly 1; yet llvmpipe runs that lookup, masked, for every
+// pixel. The receiver's pixels off every caster's footprint (render/TintReach.h: padded by the
+// technique's shadowReachTexels and the normal offset; an opaque caster's on the side of it away
+// from the light, within the lookup's shadowReachDepth, a translucent one's on both sides) are
+// shaded with a build that leaves the lookup out. Measured on the default scene: see
+// docs/measurements.md, stops 53 and 54.
 void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block,
                               const glm::mat4& viewProj, int width, int height) const {
-    const float reach = technique_->shadowReachTexels();
+    const float reach = technique_->shadowReachTexels(), depthReach = technique_->shadowReachDepth();
     // Debug channels show every lookup (compare scores the visibility output as it always was).
     if (!options_.shadowOnlyWhereCast || reach < 0.0f || options_.output != OutputMode::Shaded) return;
     // Every caster the maps hold, seen or not, with the digest of its box (the memo's keys combine
@@ -845,12 +848,13 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
         std::size_t draw;
         OrientedBox box;
         std::uint64_t key;
+        bool opaque;  // in the depth map alone, at its surface's depth (no tint, no layers)
     };
     std::vector<Caster> casters;
     for (std::size_t i = 0; i < draws.size(); ++i)
         if (draws[i].castsShadow) {
             const OrientedBox box(draws[i].meshBounds, draws[i].model);
-            casters.push_back({i, box, util::Digest().add(box.corners).value()});
+            casters.push_back({i, box, util::Digest().add(box.corners).value(), !draws[i].translucent});
         }
     std::vector<std::uint64_t> lightKeys;
     for (int l = 0; l < block.count.x; ++l) lightKeys.push_back(util::Digest().add(block.lights[l]).value());
@@ -862,26 +866,40 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
         const OrientedBox receiver(d.meshBounds, d.model);
         const std::uint64_t receiverKey = util::Digest().add(receiver.corners).value();
         const bool byCells = d.triangles <= kSplitTriangles;
+        // A solid seen from inside, or cut open by the near plane, shows faces lit through itself.
+        const bool selfShadowFree = d.selfShadowFree && (!d.solid || !nearPlaneMayCut(viewProj, d.worldBounds));
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // no map, no lookup
             const float pad = reach + light.shadow.z + 2.0f;  // as footprintsOf's: the normal offset and rounding
+            // A polygon offset that pulls depths towards the light could put a caster in front of
+            // its own box in the map: then its volume counts on both sides of it.
+            const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
+            const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
             std::vector<PixelRect> rects;
             for (const Caster& c : casters) {
-                if (c.draw == i && d.flat) continue;  // a flat part does not shadow itself
+                if (c.draw == i && selfShadowFree) continue;
                 const OrientedBox& caster = c.box;
+                // Opaque casters shadow only what lies behind them (not clearly in front of their
+                // box, within the lookup's depth reach); translucent ones tint through CSSM's and
+                // the tint maps' layer tests, whose reach in depth is not bounded here.
+                const float casterReach = c.opaque ? opaqueReach : -1.0f;
+                const auto footprint = [&](const OrientedBox& receiverPart) {
+                    return casterReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiverPart, pad, casterReach)
+                                               : shadowFootprint(light, caster, receiverPart, pad);
+                };
                 bool made = false;
                 // The whole footprint first, then its cells (if any): the whole's screen rectangle
                 // alone where it is no wider and no taller than two cells of the grid, which its
                 // cells' could not beat by much (scenes/street.json: 190 casters).
                 std::vector<scene::Bounds>& parts = shadowCells_.at(
-                    util::Digest().add(lightKeys[static_cast<std::size_t>(l)], c.key, receiverKey, pad, byCells).value(), made);
+                    util::Digest().add(lightKeys[static_cast<std::size_t>(l)], c.key, receiverKey, pad, casterReach, byCells).value(), made);
                 if (made) {
-                    const scene::Bounds whole = shadowFootprint(light, caster, receiver, pad);
+                    const scene::Bounds whole = footprint(receiver);
                     const auto add = [&parts](const scene::Bounds& part) { parts.push_back(part); };
                     if (!whole.empty()) {
                         add(whole);
-                        if (byCells) cellsOf([&](const OrientedBox& cell) { return shadowFootprint(light, caster, cell, pad); }, whole, kShadowReachLevels, add);
+                        if (byCells) cellsOf(footprint, whole, kShadowReachLevels, add);
                     }
                 }
                 if (parts.empty()) continue;

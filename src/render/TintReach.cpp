@@ -259,14 +259,10 @@ float sideMargin(const gpu::LightData& light, SideTolerance kind) {
     return 2.0f * (texels * light.shadow.w + tolerance);
 }
 
-}  // namespace
-
-// tintFootprint cut to the points that may lie beyond the caster's depth range above the
-// receiver (notBehind) and short of it (notInFront), widened by sideMargin: the half-space on the
-// far side of its largest depth, or on the near side of its least. The caster's volume and depth
-// range serve both cuts; a side not asked for stays empty.
-TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
-                             SideTolerance tolerance, bool notBehind, bool notInFront) {
+// tintFootprintSides, the near side's limit first moved nearer the light by `depthReach` of window
+// depth (how much deeper than its receiver a lookup may compare).
+TintSides footprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                         SideTolerance tolerance, float depthReach, bool notBehind, bool notInFront) {
     TintSides sides;
     if (caster.empty || receiver.empty || !(notBehind || notInFront)) return sides;
     ShadowVolume casterVolume;
@@ -307,13 +303,36 @@ TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& cas
         sides.notBehind = footprintIn(volume, receiver, &cut);
     }
     if (notInFront) {
-        const float limit = directional ? range.least - margin : range.least / (1.0f + margin);
+        const float n = light.positionNear.w, f = light.directionFar.w;
+        float least = range.least;
+        if (depthReach > 0.0f && directional) least -= depthReach * (f - n);
+        if (depthReach > 0.0f && !directional) {
+            // The view depth whose window depth f/(f-n) - fn/((f-n) z) is depthReach short of least's.
+            const float window = f / (f - n) - f * n / ((f - n) * least) - depthReach;
+            least = window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
+        }
+        const float limit = directional ? least - margin : least / (1.0f + margin);
         const Plane cut{d, -origin - limit};
         sides.notInFront = footprintIn(volume, receiver, &cut);
     }
     return sides;
 }
 
+}  // namespace
+
+// tintFootprint cut to the points that may lie beyond the caster's depth range above the
+// receiver (notBehind) and short of it (notInFront), widened by sideMargin: the half-space on the
+// far side of its largest depth, or on the near side of its least. The caster's volume and depth
+// range serve both cuts; a side not asked for stays empty.
+TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                             SideTolerance tolerance, bool notBehind, bool notInFront) {
+    return footprintSides(light, caster, receiver, padTexels, tolerance, 0.0f, notBehind, notInFront);
+}
+
+scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                                    float depthReach) {
+    return footprintSides(light, caster, receiver, padTexels, SideTolerance::Surface, depthReach, false, true).notInFront;
+}
 
 OrientedBox::OrientedBox(const scene::Bounds& world) : corners(world.corners()), empty(world.empty()) {}
 

@@ -70,6 +70,15 @@ inline scene::Bounds shadowFootprint(const gpu::LightData& light, const Oriented
     return tintFootprint(light, caster, receiver, padTexels);
 }
 
+// shadowFootprint for an opaque caster: the part of it that does not lie clearly in front of the
+// caster's part above the receiver, as the light sees them (the cut of tintFootprintNotInFront,
+// with SideTolerance::Surface: the normal offset may move a lookup away from the light). An opaque
+// caster wholly behind a receiver's point puts nothing in front of it in the map. `depthReach`:
+// how much deeper than its receiver's biased depth a lookup may compare, in window depth
+// (ShadowTechnique::shadowReachDepth: the receiver-plane taps' clamp).
+scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                                    float depthReach);
+
 // How near a receiver may come to a caster's layers before it counts as on their side: a lookup
 // that compares its biased depth with the layers (Lookup: an opaque receiver's tint product, whose
 // bias lands it in front of its geometry), or one that places the receiver by its own surface

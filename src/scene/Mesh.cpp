@@ -148,4 +148,20 @@ bool Mesh::partIsFlat(std::size_t part) const {
     return true;
 }
 
+bool Mesh::partHasFaceNormals(std::size_t part) const {
+    if (part >= parts.size()) return false;
+    const MeshPart& mp = parts[part];
+    bool any = false;
+    for (std::uint32_t i = mp.firstIndex; i + 2 < mp.firstIndex + mp.indexCount; i += 3) {
+        const Vertex *a = &vertices[indices[i]], *b = &vertices[indices[i + 1]], *c = &vertices[indices[i + 2]];
+        const auto plane = planeOf(a->position, b->position, c->position);
+        if (!plane) continue;
+        const glm::vec3 n(*plane);
+        for (const Vertex* v : {a, b, c})
+            if (glm::any(glm::greaterThan(glm::abs(v->normal - n), glm::vec3(1e-5f)))) return false;
+        any = true;
+    }
+    return any;
+}
+
 }  // namespace penumbra::scene

@@ -64,6 +64,18 @@ TEST(MeshConvex, BoxesAndSpheresAreConvexAPlaneIsFlat) {
     EXPECT_FALSE(shapes::box({1.0f, 1.0f, 1.0f}).partIsConvex(1)) << "no such part";
 }
 
+// Mesh::partHasFaceNormals: flat shading, which a convex solid needs to shadow none of its own lit
+// points (Draw::selfShadowFree): a smooth normal can light a facet turned from the light.
+TEST(MeshFaceNormals, ABoxAndAPlaneAreShadedFlatASphereIsNot) {
+    EXPECT_TRUE(shapes::box({1.0f, 2.0f, 0.5f}).partHasFaceNormals(0));
+    EXPECT_TRUE(shapes::plane(2.0f, 2.0f).partHasFaceNormals(0));
+    EXPECT_FALSE(shapes::sphere(1.0f, 16, 8).partHasFaceNormals(0));
+    Mesh tilted = shapes::box({1.0f, 1.0f, 1.0f});
+    tilted.vertices[0].normal = glm::normalize(tilted.vertices[0].normal + glm::vec3(0.0f, 1e-3f, 1e-3f));
+    EXPECT_FALSE(tilted.partHasFaceNormals(0)) << "one vertex normal a thousandth off its face's";
+    EXPECT_FALSE(shapes::box({1.0f, 1.0f, 1.0f}).partHasFaceNormals(1)) << "no such part";
+}
+
 TEST(MeshConvex, TwoBoxesInOnePartOrAnInwardWindingAreNot) {
     // Two boxes side by side in one part: a ray along x crosses four faces.
     Mesh a = shapes::box({1.0f, 1.0f, 1.0f}), b = shapes::box({1.0f, 1.0f, 1.0f});

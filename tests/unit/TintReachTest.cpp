@@ -279,6 +279,26 @@ TEST(TintReach, APaneAboveABlockIsInFrontOfItButTheGroundIsNotInFrontOfThePane) 
     }
 }
 
+// An opaque caster shadows what lies behind it, and what lies in front of it by less than the
+// lookup's reach in depth (receiver-plane taps compare up to 0.01 of window depth deeper).
+TEST(TintReach, AnOpaqueCasterJustBehindAReceiverShadowsItOnlyWithinTheLookupsDepthReach) {
+    const scene::Bounds plate = box({-1, 1, -1}, {1, 1.02f, 1});
+    const scene::Bounds above = box({-0.5f, 2, -0.5f}, {0.5f, 2.5f, 0.5f}), below = box({-0.5f, 0.4f, -0.5f}, {0.5f, 0.9f, 0.5f});
+    // Sun: depth 0..1 spans 100 units, so a reach of 0.01 is 1 unit. Spot at y = 5, near 0.05, far 50:
+    // the plate at view depth ~4 lies 0.1 in front of the block at ~4.1; window depths differ by ~3e-4.
+    const gpu::LightData sun = directional({0, -1, 0}, 0.01f), spot = perspective(gpu::kLightSpot, {0, 5, 0}, 1e-3f);
+    for (const gpu::LightData& light : {sun, spot}) {
+        const int type = static_cast<int>(light.colorType.w);
+        EXPECT_FALSE(opaqueShadowFootprint(light, above, plate, 2.0f, 0.0f).empty()) << type << ": a caster above shadows the plate";
+        EXPECT_TRUE(opaqueShadowFootprint(light, below, plate, 2.0f, 0.0f).empty()) << type << ": the block lies wholly behind the plate";
+        EXPECT_FALSE(opaqueShadowFootprint(light, below, plate, 2.0f, 0.01f).empty()) << type << ": taps reaching 0.01 deeper meet it";
+        EXPECT_FALSE(shadowFootprint(light, below, plate, 2.0f).empty()) << type << ": two-sided, the block's volume holds the plate";
+    }
+    // The window depth's step between the plate (~4) and the block (~4.1) under the spot.
+    EXPECT_TRUE(opaqueShadowFootprint(spot, below, plate, 2.0f, 1e-5f).empty());
+    EXPECT_FALSE(opaqueShadowFootprint(spot, below, plate, 2.0f, 1e-3f).empty());
+}
+
 TEST(TintReach, QuartersTileABoxAcrossItsTwoLongestSides) {
     const scene::Bounds b = box({-3.0f, -0.05f, -2.0f}, {3.0f, 0.05f, 2.0f});
     const std::array<scene::Bounds, 4> q = quarters(b, glm::mat4(1.0f));

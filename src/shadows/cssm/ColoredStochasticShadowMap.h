@@ -46,6 +46,8 @@ public:
     // With the opaque casters in a map of their own, its hard compare and the coloured term, exactly
     // 1 beyond the tint's reach; without, the colour map holds them too.
     float shadowReachTexels() const override { return tintReachTexels() < 0.0f ? -1.0f : std::max(2.0f, tintReachTexels()); }
+    // The separate opaque map's compare takes the receiver's own depth at its texel (compareAt).
+    float shadowReachDepth() const override { return tintReachTexels() < 0.0f ? -1.0f : 0.0f; }
     bool behindLayersBuild() const override { return tintBehindAll(); }  // (tiles need the separate opaque map)
     bool ownLayersBuild() const override { return tintBehindAll(); }
     void bindLookup(const gl::Program& lighting) const override;

@@ -14,6 +14,7 @@ public:
     bool ownLayersBuild() const override { return true; }
     // The texel the comparison reads, and the tint's.
     float shadowReachTexels() const override { return 2.0f; }
+    float shadowReachDepth() const override { return 0.0f; }  // its own depth, compared at one texel
     void bindLookup(const gl::Program&) const override { maps_.bind(); }
 };
 

@@ -23,6 +23,7 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return KernelTechnique::memoryBytes() + jitter_.memoryBytes(); }
     float shadowReachTexels() const override;
+    float shadowReachDepth() const override { return receiverPlane_ ? 0.01f : 0.0f; }  // tapReceiverDepth's clamp
 
 protected:
     std::vector<Parameter> declareParameters() override;
