@@ -195,9 +195,9 @@ public:
     // How much deeper than its receiver's biased depth (window depth of the light's map) the
     // lookup may compare with an opaque caster's depths: 0 where every compare takes the
     // receiver's own depth, the receiver-plane taps' clamp where they extrapolate it (0.01,
-    // tapReceiverDepth). An opaque caster wholly nearer than that behind the receiver cannot
-    // shadow it (render/TintReach.h, opaqueShadowFootprint). Negative (the default): not bounded,
-    // every caster's shadow volume counts on both sides of it.
+    // tapReceiverDepth). An opaque caster lying wholly behind the receiver, by more than that,
+    // cannot shadow it (render/TintReach.h, opaqueShadowFootprint). Negative (the default): not
+    // bounded, every caster's shadow volume counts on both sides of it.
     virtual float shadowReachDepth() const { return -1.0f; }
     // Whether the lookup has a cheaper build for receivers behind every translucent layer around
     // them (RECEIVER_BEHIND_LAYERS), giving the same pixels there: CSSM's tint product without its
