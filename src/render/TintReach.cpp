@@ -398,8 +398,14 @@ PixelRect screenRect(const scene::Bounds& box, const glm::mat4& viewProj, int wi
     const PixelRect view{0, 0, width, height};
     if (box.empty()) return {};
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const glm::vec3& c : box.corners()) {
-        const glm::vec4 clip = viewProj * glm::vec4(c, 1.0f);
+    // The corners' clip coordinates as the minimum corner's plus the box's edges along x, y, z
+    // (viewProj's columns scaled): one product instead of eight (scenes/street.json's split takes
+    // tens of thousands of these a frame).
+    const glm::vec3 size = box.max - box.min;
+    const glm::vec4 origin = viewProj * glm::vec4(box.min, 1.0f), ex = viewProj[0] * size.x, ey = viewProj[1] * size.y,
+                    ez = viewProj[2] * size.z;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 clip = origin + (i & 1 ? ex : glm::vec4(0.0f)) + (i & 2 ? ey : glm::vec4(0.0f)) + (i & 4 ? ez : glm::vec4(0.0f));
         if (clip.w <= 1e-5f) return view;  // behind the eye: its projection is unbounded
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
         lo = glm::min(lo, ndc);
