@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <span>
 #include <stdexcept>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -589,7 +590,7 @@ struct ReceiverFootprints {
     std::vector<PixelRect> tinted, notBehind, notInFront;
 };
 // The non-empty screen rectangles of world boxes `parts` within `own`, appended to `rects`.
-void appendOnScreen(std::vector<PixelRect>& rects, const std::vector<scene::Bounds>& parts, const PixelRect& own,
+void appendOnScreen(std::vector<PixelRect>& rects, std::span<const scene::Bounds> parts, const PixelRect& own,
                     const glm::mat4& viewProj, int width, int height) {
     for (const scene::Bounds& part : parts) {
         const PixelRect rect = screenRect(part, viewProj, width, height).intersected(own);
@@ -909,7 +910,7 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
                     rects.push_back(whole);
                     continue;
                 }
-                appendOnScreen(rects, std::vector<scene::Bounds>(parts.begin() + 1, parts.end()), own, viewProj, width, height);
+                appendOnScreen(rects, std::span<const scene::Bounds>(parts).subspan(1), own, viewProj, width, height);  // its cells
             }
             rects = snapped(own, rects);
             if (!rects.empty() && partition(own, rects).outside.empty()) continue;  // shadows may fall on every pixel
