@@ -69,10 +69,10 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
                                       translucentAlpha_[static_cast<std::size_t>(mat.diffuseTexture)];
             Draw d{o, meshIndex, p, &mat, model, mat.translucent() || textureAlpha, obj.castsShadow, obj.visible};
             d.moving = !obj.animation.empty();
-            // A mirroring transform turns the winding inside out; such parts are drawn whole.
-            d.solid = meshes_[meshIndex].closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
-            d.ownLayersKnown = meshes_[meshIndex].flatOrConvexParts[p] && (!meshes_[meshIndex].closedParts[p] || mat.diffuseTexture < 0);
             const GpuMesh& g = meshes_[meshIndex];
+            // A mirroring transform turns the winding inside out; such parts are drawn whole.
+            d.solid = g.closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
+            d.ownLayersKnown = g.flatOrConvexParts[p] && (!g.closedParts[p] || mat.diffuseTexture < 0);
             d.selfShadowFree = g.flatOrConvexParts[p] && (!g.closedParts[p] || (d.solid && g.faceNormalParts[p]));
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
