@@ -255,6 +255,12 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 if (selected(d, selection)) all.add(d.worldBounds);
             return all;
         };
+        frame.casterBoxes = [&](const shadows::CasterSelection& selection) {
+            std::vector<scene::Bounds> boxes;
+            for (const Draw& d : draws)
+                if (selected(d, selection)) boxes.push_back(d.worldBounds);
+            return boxes;
+        };
         frame.casterDigest = [&](const shadows::CasterSelection& selection) {
             util::Digest digest;
             for (const Draw& d : draws)

@@ -120,6 +120,9 @@ struct ShadowFrame {
     // The world bounds of the casters `drawCasters` would draw for `selection` (empty: none), so
     // that passes over a map can be limited to where those casters can have written.
     std::function<scene::Bounds(const CasterSelection& selection)> casterBounds;
+    // The same casters' world bounds one by one (a box per drawn part), for passes that must know
+    // which caster lies in front of which (DepthAndTintMaps' tint over the still depth).
+    std::function<std::vector<scene::Bounds>(const CasterSelection& selection)> casterBoxes;
     // A digest of what `drawCasters` would draw for `selection`: which parts, their transforms
     // and the materials' alpha tests. Equal digests in two frames mean equal depth written, so a
     // map of still casters can be kept (DepthAndTintMaps). Never 0.

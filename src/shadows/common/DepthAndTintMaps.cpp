@@ -5,6 +5,10 @@
 #include "gpu/ShaderContract.h"
 #include "util/Digest.h"
 
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <span>
 #include <utility>
 
 namespace penumbra::shadows {
@@ -37,6 +41,47 @@ std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, c
         faces.push_back(std::move(fb));
     }
     return faces;
+}
+
+// The least and greatest window depth of `box`'s corners through `viewProj` (nullopt when one lies
+// behind a perspective light's eye, where depth flips).
+std::optional<glm::vec2> depthRange(const scene::Bounds& box, const glm::mat4& viewProj) {
+    glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y, (c & 4) ? box.max.z : box.min.z);
+        const glm::vec4 clip = viewProj * glm::vec4(corner, 1.0f);
+        if (clip.w <= 0.0f) return std::nullopt;
+        const float z = 0.5f * clip.z / clip.w + 0.5f;  // window depth (clip z in [-w, w])
+        range = {std::min(range.x, z), std::max(range.y, z)};
+    }
+    return range;
+}
+
+// Whether every translucent caster that shares texels with an animated opaque one lies wholly
+// behind it, as the light sees them (boxes through `viewProj`, with a margin in window depth of 8
+// times the rounding of the tint's alpha there: half floats of 1 - depth). Then no animated caster has a translucent layer
+// in front of it, and a tint drawn over the still casters' depth alone gives every receiver the
+// light it gets from a tint drawn over every caster's:
+// - an animated caster finds the nearest layer of its texels behind it, untinted either way (the
+//   layers behind it, which the still depth lets through, sit behind tintBehind's test);
+// - a receiver behind one is shadowed by the depth test, whatever the tint there;
+// - a soft lookup's tint, read at the receiver's own place, now counts the panes behind the
+//   caster's rim where the light that passes the rim meets them (the reference's answer).
+// Where a layer may lie in front of an animated caster, the tint must be tested against it too
+// (it then holds only the layers in front: the deterministic map's exact answer for it).
+bool translucentBehindMoving(std::span<const scene::Bounds> moving, std::span<const scene::Bounds> translucent,
+                             const glm::mat4& viewProj, int resolution) {
+    const auto margin = [](float depth) { return std::max(1.0f - depth, 1.0f / 1024.0f) / 256.0f; };
+    for (const scene::Bounds& m : moving) {
+        const TexelRect mTexels = texelRect(m, viewProj, resolution);
+        const std::optional<glm::vec2> mDepth = depthRange(m, viewProj);
+        for (const scene::Bounds& t : translucent) {
+            if (isEmpty(intersection(mTexels, texelRect(t, viewProj, resolution)))) continue;
+            const std::optional<glm::vec2> tDepth = depthRange(t, viewProj);
+            if (!mDepth || !tDepth || tDepth->x <= mDepth->y + margin(tDepth->x)) return false;
+        }
+    }
+    return true;
 }
 
 }  // namespace
@@ -120,7 +165,7 @@ void DepthAndTintMaps::ensureStill(LightMaps& m) {
 }
 
 void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std::size_t face, int light,
-                                    const OpaqueRegion& region, std::uint64_t stillKey, bool moving) {
+                                    const OpaqueRegion& region, std::uint64_t stillKey, bool moving, bool movingLater) {
     const glm::mat4& vp = (*frame.lightSpaces)[static_cast<std::size_t>(light)].viewProj[face];
     const float farDepth = 1.0f;
     const ScopedScissor scissor(region.texels, region.cropped);
@@ -131,7 +176,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     };
     const std::uint64_t overStill = std::exchange(m.depthOverStill[face], 0);
     if (stillKey == 0) {  // nothing reused: every caster, every frame
-        drawInto(m.depthFaces[face], Motion::Any);
+        drawInto(m.depthFaces[face], movingLater ? Motion::Still : Motion::Any);
         m.depthHolds[face] = 0;
         return;
     }
@@ -155,14 +200,23 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     if (!isEmpty(restore))
         glCopyImageSubData(m.still.id(), target, 0, restore.x, restore.y, z, m.depth.id(), target, 0, restore.x, restore.y, z,
                            restore.z - restore.x, restore.w - restore.y, 1);
-    m.depthFaces[face].bind();
-    {
+    if (!movingLater) {
+        m.depthFaces[face].bind();
         const ScopedScissor movedOnly(moved, !region.cropped);
         frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
     }
     m.depthHolds[face] = 0;
     m.depthOverStill[face] = stillKey;
     m.depthMovedIn[face] = moved;
+}
+
+void DepthAndTintMaps::drawMovingOver(const ShadowFrame& frame, LightMaps& m, std::size_t face, int light, const OpaqueRegion& region) {
+    const glm::mat4& vp = (*frame.lightSpaces)[static_cast<std::size_t>(light)].viewProj[face];
+    const glm::vec2 po = (*frame.lights)[static_cast<std::size_t>(light)].shadow.polygonOffset;
+    const gl::ScopedPassState state(gl::PassState::depthOnly().withPolygonOffset(po.x, po.y));
+    const ScopedScissor inside(region.cropped ? region.texels : m.movingTexels[face]);
+    m.depthFaces[face].bind();
+    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
 }
 
 void DepthAndTintMaps::setFiltering(GLenum filter) {
@@ -224,10 +278,17 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const bool cropped = light == depthElsewhere && anyTranslucent;
             const OpaqueRegion region{cropped ? cropTo(tinted, ls.resolution) * vp : vp,
                                       cropped ? tinted : TexelRect(0, 0, ls.resolution, ls.resolution), cropped};
-            const scene::Bounds movingBounds =
-                reuse ? frame.casterBounds({Casters::Opaque, region.cull, light, Motion::Moving}) : scene::Bounds{};
+            const CasterSelection movingOpaque{Casters::Opaque, region.cull, light, Motion::Moving};
+            const scene::Bounds movingBounds = frame.casterBounds(movingOpaque);
             const bool moving = !movingBounds.empty();
             const TexelRect movingTexels = texelRect(movingBounds, vp, ls.resolution);
+            // The tint is tested against the still casters alone where that gives the same light
+            // (translucentBehindMoving), in every frame alike, kept maps or not: then an animated
+            // opaque caster changes nothing in it. Not CSSM's maps (FarthestLayer), whose colour
+            // map is tested against this depth with the animated casters in it.
+            const bool tintOverStill = withTint_ && tintAlpha_ == TintAlpha::NearestLayer && anyTranslucent && moving &&
+                                       translucentBehindMoving(frame.casterBoxes(movingOpaque), frame.casterBoxes(translucent), vp,
+                                                               ls.resolution);
             const std::uint64_t stillKey =
                 reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, region.cull, light, Motion::Still}), region.cull, po).value()
                       : 0;
@@ -238,19 +299,23 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
                 reuse ? texelRect(frame.casterBounds({Casters::Translucent, vp, light, Motion::Moving}), vp, ls.resolution) : TexelRect(0);
             const std::uint64_t translucentKey =
                 reuse ? util::Digest().add(stillKey, frame.casterDigest({Casters::Translucent, vp, light, Motion::Still})).value() : 0;
-            const bool kept = keepTranslucent(m, face, translucentKey, unite(movingTranslucent, intersection(movingTexels, translucentTexels)));
+            const TexelRect movingOverTint = tintOverStill ? TexelRect(0) : intersection(movingTexels, translucentTexels);
+            const bool kept = keepTranslucent(m, face, translucentKey, unite(movingTranslucent, movingOverTint));
             m.stillKeys[face] = stillKey;
             m.movingTexels[face] = movingTexels;
             // The tint texels to draw again (nothing without a tint map): what changed, or where the
             // last translucent casters may have left something and where this frame's are.
             const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tinted);
-            if (light != depthElsewhere || (anyTranslucent && !isEmpty(redraw))) {
+            const bool opaqueDrawn = light != depthElsewhere || (anyTranslucent && !isEmpty(redraw));
+            if (opaqueDrawn) {
                 const gl::ScopedPassState state(opaquePass);
-                renderOpaque(frame, m, face, light, region, stillKey, moving);
+                renderOpaque(frame, m, face, light, region, stillKey, moving, tintOverStill);
             }
-            if (isEmpty(redraw)) continue;
-            m.tintDirty[face] = kept ? unite(m.tintDirty[face], tinted) : tinted;
-            redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw, lights[i]);
+            if (!isEmpty(redraw)) {
+                m.tintDirty[face] = kept ? unite(m.tintDirty[face], tinted) : tinted;
+                redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw, lights[i]);
+            }
+            if (opaqueDrawn && tintOverStill) drawMovingOver(frame, m, face, light, region);
         }
     }
 }

@@ -11,7 +11,10 @@
 // while the still translucent and opaque casters are, and redrawn only where animated casters
 // were last frame or are now: translucent ones, and opaque ones over the translucent casters'
 // texels (`translucentKeys`, `translucentRedo`, which techniques with maps of their own over the
-// same depth, CSSM's, use too). Moments redo only the animated casters' texels (`stillKeys`,
+// same depth, CSSM's, use too). Opaque ones only where a translucent caster may lie in front of
+// them: where every one that shares their texels lies behind them, the tint is drawn over the
+// still casters' depth and the animated ones after it (NearestLayer maps, kept or redrawn alike;
+// see translucentBehindMoving in the .cpp). Moments redo only the animated casters' texels (`stillKeys`,
 // `movingTexels`). Measured on llvmpipe, default scene (one animated sphere) and glass scene (a
 // flying glass ball): see the README's "Shadow maps of still casters".
 #include "gl/Framebuffer.h"
@@ -141,8 +144,13 @@ private:
     };
     // Makes face `face` of light `light`'s depth map hold this frame's opaque casters in `region`,
     // drawing as little as the digests allow; `stillKey` is their digest (0: do not reuse).
+    // `movingLater`: the animated ones are left for drawMovingOver, so that the tint pass between
+    // the two is tested against the still casters' depth alone.
     void renderOpaque(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region,
-                      std::uint64_t stillKey, bool moving);
+                      std::uint64_t stillKey, bool moving, bool movingLater);
+    // Draws the animated opaque casters over face `face`'s depth, inside their texels
+    // (maps.movingTexels) or the cropped region.
+    void drawMovingOver(const ShadowFrame& frame, LightMaps& maps, std::size_t face, int light, const OpaqueRegion& region);
     // Sets face `face`'s translucentKeys and translucentRedo for this frame's `key` and the
     // texels `changed` by animated casters; true when the maps drawn last frame are kept (the
     // same key), so that only translucentRedo is drawn again.
