@@ -236,7 +236,7 @@ glm::vec2 DepthAndTintMaps::translucentTestOffset(const Light& light) {
     return light.shadow.polygonOffset + glm::vec2(0.0f, kMoreUnits);
 }
 
-void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
+void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere, const TranslucentPass& translucentPass) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
@@ -282,11 +282,12 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const scene::Bounds movingBounds = frame.casterBounds(movingOpaque);
             const bool moving = !movingBounds.empty();
             const TexelRect movingTexels = texelRect(movingBounds, vp, ls.resolution);
-            // The tint is tested against the still casters alone where that gives the same light
-            // (translucentBehindMoving), in every frame alike, kept maps or not: then an animated
-            // opaque caster changes nothing in it. Not CSSM's maps (FarthestLayer), whose colour
-            // map is tested against this depth with the animated casters in it.
-            const bool tintOverStill = withTint_ && tintAlpha_ == TintAlpha::NearestLayer && anyTranslucent && moving &&
+            // Translucent casters are tested against the still casters alone where that gives the
+            // same light (translucentBehindMoving), in every frame alike, kept maps or not: then an
+            // animated opaque caster changes nothing they draw. Maps other than the plain tint only
+            // when their pass runs in between (translucentPass).
+            const bool overStillDrawn = translucentPass ? true : withTint_ && tintAlpha_ == TintAlpha::NearestLayer;
+            const bool translucentOverStill = overStillDrawn && !isEmpty(translucentTexels) && moving &&
                                        translucentBehindMoving(frame.casterBoxes(movingOpaque), frame.casterBoxes(translucent), vp,
                                                                ls.resolution);
             const std::uint64_t stillKey =
@@ -299,7 +300,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
                 reuse ? texelRect(frame.casterBounds({Casters::Translucent, vp, light, Motion::Moving}), vp, ls.resolution) : TexelRect(0);
             const std::uint64_t translucentKey =
                 reuse ? util::Digest().add(stillKey, frame.casterDigest({Casters::Translucent, vp, light, Motion::Still})).value() : 0;
-            const TexelRect movingOverTint = tintOverStill ? TexelRect(0) : intersection(movingTexels, translucentTexels);
+            const TexelRect movingOverTint = translucentOverStill ? TexelRect(0) : intersection(movingTexels, translucentTexels);
             const bool kept = keepTranslucent(m, face, translucentKey, unite(movingTranslucent, movingOverTint));
             m.stillKeys[face] = stillKey;
             m.movingTexels[face] = movingTexels;
@@ -309,13 +310,18 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere) {
             const bool opaqueDrawn = light != depthElsewhere || (anyTranslucent && !isEmpty(redraw));
             if (opaqueDrawn) {
                 const gl::ScopedPassState state(opaquePass);
-                renderOpaque(frame, m, face, light, region, stillKey, moving, tintOverStill);
+                renderOpaque(frame, m, face, light, region, stillKey, moving, translucentOverStill);
             }
             if (!isEmpty(redraw)) {
                 m.tintDirty[face] = kept ? unite(m.tintDirty[face], tinted) : tinted;
                 redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw, lights[i]);
             }
-            if (opaqueDrawn && tintOverStill) drawMovingOver(frame, m, face, light, region);
+            if (translucentPass) {
+                translucentPass(i, face);
+                gl::unbindTextureUnits(gpu::kLightingUnits);  // what it read (see above)
+                glViewport(0, 0, ls.resolution, ls.resolution);
+            }
+            if (opaqueDrawn && translucentOverStill) drawMovingOver(frame, m, face, light, region);
         }
     }
 }

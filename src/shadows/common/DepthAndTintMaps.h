@@ -24,6 +24,7 @@
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 
+#include <functional>
 #include <vector>
 
 namespace penumbra::shadows {
@@ -118,7 +119,13 @@ public:
     // translucent casters need it as the depth test of the tint pass, and then only under them
     // (culled and scissored to their texels); otherwise the light costs no pass here (measured on
     // the 975k-triangle grid: 965k triangles per frame saved).
-    void render(const ShadowFrame& frame, int depthElsewhere = -1);
+    // `translucentPass` (may be empty): the technique's own pass of translucent casters tested
+    // against this depth (CSSM's colour map), called per light and face right after the tint's.
+    // The depth it tests against then holds the animated opaque casters only where a translucent
+    // caster may lie in front of them (translucentBehindMoving in the .cpp; translucentRedo counts
+    // their texels only then); without it, only the plain tint (NearestLayer) is drawn that way.
+    using TranslucentPass = std::function<void(std::size_t light, std::size_t face)>;
+    void render(const ShadowFrame& frame, int depthElsewhere = -1, const TranslucentPass& translucentPass = {});
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
     void bind(bool rawDepth = false) const;

@@ -186,68 +186,75 @@ void ColoredStochasticShadowMap::renderMaps(const ShadowFrame& frame) {
         depth_.setWithTint(tintBehindAll());
         maps_.clear();
     }
-    depth_.render(frame);  // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance)
-    gl::DebugGroup group(name().c_str());
     if (castersXi_ != xi_) buildCasters();
     casters_->set("uRandomGenerator", generator_);
     // The dither period matches the tile: log2 of its side.
     casters_->set("uDitherBits", tileLevel(tileSide()));
     casters_->set("uFrameSeed", static_cast<int>(frame.frameIndex));
-    // 2. Opaque depth copied into every channel; 3. translucent casters in front of the opaque
-    // depth (tested, not written), MIN-blended per channel.
-    const gl::PassState copyPass = gl::PassState::fullscreen();
-    gl::PassState casterPass = gl::PassState::depthOnly().withBlend(gl::BlendState::of(GL_MIN, GL_ONE, GL_ONE));
-    casterPass.depthWrite = false;
-    for (std::size_t i = 0; i < depth_.slots().size(); ++i) {
-        if (!depth_.slots().shadowed(i)) continue;
-        ensure(i, depth_.maps(i));
-        LightMap& m = maps_[i];
-        const LightSpace& ls = (*frame.lightSpaces)[i];
-        const auto setDepthRange = [&](const auto& p) {
-            p.set("uPerspective", ls.perspective ? 1 : 0);
-            p.set("uNear", ls.near);
-            p.set("uFar", ls.far);
-        };
-        setDepthRange(copy_);
-        setDepthRange(*casters_);
-        casters_->set("uTestOffset", DepthAndTintMaps::translucentTestOffset((*frame.lights)[i]));
-        for (std::size_t f = 0; f < m.targets.size(); ++f) {
-            // Drawn with the same key last frame: the colour map and its tiles are as drawn except
-            // where animated casters were or are (DepthAndTintMaps::translucentRedo).
-            const std::uint64_t key = colourKey(i, f);
-            const bool kept = key != 0 && key == m.holds[f];
-            m.holds[f] = key;
-            const TexelRect redo = kept ? depth_.maps(i).translucentRedo[f] : TexelRect(0);
-            if (kept && isEmpty(redo)) continue;
-            const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i), Motion::Any, ls.viewProj[f]};
-            const scene::Bounds casters = frame.casterBounds(translucent);
-            glViewport(0, 0, m.resolution, m.resolution);
-            m.targets[f].bind();
-            const TexelRect rect = texelRect(casters, ls.viewProj[f], m.resolution);
-            if (kept) {  // drawn again in `redo` below, by the same draws (ξ hashes gl_PrimitiveID)
-                clearColourIn(m.targets[f].id(), redo, glm::vec4(1.0f));
-                m.dirty[f] = unite(m.dirty[f], rect);
-            } else if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
-                clearColourIn(m.targets[f].id(), m.dirty[f], glm::vec4(1.0f));  // white where it may hold anything
-                m.dirty[f] = rect;
-            } else {  // 1 (white) where nothing opaque is
-                const gl::ScopedPassState state(copyPass);
-                m.dirty[f] = TexelRect(0, 0, m.resolution, m.resolution);
-                copy_.use();
-                depthSampler_.bind(0);
-                m.depthFaces[f].bind(0);
-                fullscreenVao_.bind();
-                glDrawArrays(GL_TRIANGLES, 0, 3);
-                gl::Sampler::unbind(0);
-            }
-            if (!casters.empty()) {
-                const ScopedScissor scissor(redo, kept);
-                const gl::ScopedPassState state(casterPass);
-                frame.drawCasters(*casters_, translucent);
-            }
-            if (m.tileSide > 0) renderTiles(m, f, kept ? redo : rect, !kept);
-        }
+    // 1. opaque casters' depth (and the tint maps: the product of the layers' transmittance);
+    // 2. the colour maps over it. A map of translucent layers alone is drawn face by face inside
+    // depth_'s pass, which tests them against the still casters' depth where no layer can lie in
+    // front of an animated caster (DepthAndTintMaps::render): the animated casters' motion then
+    // leaves the map as it is. The combined map copies the whole opaque depth: after it.
+    if (separateOpaque_) {
+        depth_.render(frame, -1, [&](std::size_t light, std::size_t face) { renderColour(frame, light, face); });
+        return;
     }
+    depth_.render(frame);
+    for (std::size_t i = 0; i < depth_.slots().size(); ++i)
+        if (depth_.slots().shadowed(i))
+            for (std::size_t f = 0; f < (depth_.maps(i).cube ? 6u : 1u); ++f) renderColour(frame, i, f);
+}
+
+void ColoredStochasticShadowMap::renderColour(const ShadowFrame& frame, std::size_t i, std::size_t f) {
+    gl::DebugGroup group(name().c_str());
+    ensure(i, depth_.maps(i));
+    LightMap& m = maps_[i];
+    const LightSpace& ls = (*frame.lightSpaces)[i];
+    const auto setDepthRange = [&](const auto& p) {
+        p.set("uPerspective", ls.perspective ? 1 : 0);
+        p.set("uNear", ls.near);
+        p.set("uFar", ls.far);
+    };
+    setDepthRange(copy_);
+    setDepthRange(*casters_);
+    casters_->set("uTestOffset", DepthAndTintMaps::translucentTestOffset((*frame.lights)[i]));
+    // Drawn with the same key last frame: the colour map and its tiles are as drawn except
+    // where animated casters were or are (DepthAndTintMaps::translucentRedo).
+    const std::uint64_t key = colourKey(i, f);
+    const bool kept = key != 0 && key == m.holds[f];
+    m.holds[f] = key;
+    const TexelRect redo = kept ? depth_.maps(i).translucentRedo[f] : TexelRect(0);
+    if (kept && isEmpty(redo)) return;
+    const CasterSelection translucent{Casters::Translucent, ls.viewProj[f], static_cast<int>(i), Motion::Any, ls.viewProj[f]};
+    const scene::Bounds casters = frame.casterBounds(translucent);
+    glViewport(0, 0, m.resolution, m.resolution);
+    m.targets[f].bind();
+    const TexelRect rect = texelRect(casters, ls.viewProj[f], m.resolution);
+    if (kept) {  // drawn again in `redo` below, by the same draws (ξ hashes gl_PrimitiveID)
+        clearColourIn(m.targets[f].id(), redo, glm::vec4(1.0f));
+        m.dirty[f] = unite(m.dirty[f], rect);
+    } else if (separateOpaque_) {  // translucent layers only: start from "nothing occludes"
+        clearColourIn(m.targets[f].id(), m.dirty[f], glm::vec4(1.0f));  // white where it may hold anything
+        m.dirty[f] = rect;
+    } else {  // 1 (white) where nothing opaque is: the opaque depth copied into every channel
+        const gl::ScopedPassState state(gl::PassState::fullscreen());
+        m.dirty[f] = TexelRect(0, 0, m.resolution, m.resolution);
+        copy_.use();
+        depthSampler_.bind(0);
+        m.depthFaces[f].bind(0);
+        fullscreenVao_.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        gl::Sampler::unbind(0);
+    }
+    if (!casters.empty()) {  // translucent casters in front of the opaque depth (tested, not written), MIN-blended per channel
+        gl::PassState casterPass = gl::PassState::depthOnly().withBlend(gl::BlendState::of(GL_MIN, GL_ONE, GL_ONE));
+        casterPass.depthWrite = false;
+        const ScopedScissor scissor(redo, kept);
+        const gl::ScopedPassState state(casterPass);
+        frame.drawCasters(*casters_, translucent);
+    }
+    if (m.tileSide > 0) renderTiles(m, f, kept ? redo : rect, !kept);
 }
 
 std::vector<std::string> ColoredStochasticShadowMap::lookupDefines() const {

@@ -84,6 +84,8 @@ private:
     bool tintBehindAll() const { return usesTiles() && tintBehindAll_; }  // the lookup reads the tint maps
     int tileSide() const;
     float tapRadiusTexels() const;  // the Poisson and random filters' radius
+    // Face `face` of light `light`'s colour map (and its tiles), over depth_'s opaque depth as it is now.
+    void renderColour(const ShadowFrame& frame, std::size_t light, std::size_t face);
     void renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole);
     void buildCasters();
     // What face `face` of light `light`'s colour map is drawn from this frame (0: not keepable).
