@@ -179,6 +179,11 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--grid-scene", bench.gridScenes,
                          "also a generated scene (ground, 10x10 spheres and tori) of about N triangles, written to OUT/scenes (repeatable)")
         ->check(CLI::Range(std::size_t(1000), std::size_t(50000000)));
+    benchCmd->add_option("--scene-step", bench.settings.sceneStep,
+                         "scene seconds per frame, from 0 at each case's first measured frame (default 1/60); with --frames N "
+                         "every case measures the same N frames, e.g. --frames 64 --scene-step 0.125: the default scene's "
+                         "whole 8 s animation")
+        ->check(CLI::Range(0.0f, 60.0f));
     benchCmd->add_flag("--fixed-camera", bench.settings.fixedCamera, "keep the scene's camera (no camera_path, no orbit): for peer comparisons");
     benchCmd->add_flag("--calibrate", bench.settings.calibrate, "check every pass's timer query against a glFinish wall clock");
     benchCmd->add_flag("--quality", bench.quality, "add compare's metrics and heat maps (ray-traced reference of the first scene)");

@@ -149,7 +149,11 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
     std::unique_ptr<Engine> engine = makeEngine(scene, c, settings);
     const int w = settings.width, h = settings.height;
     FramePacer pacer;
-    std::uint64_t frameNumber = 0;
+    std::uint64_t frameNumber = 0;  // the renderer's frame index (timer queries), warm-up included
+    // Scene time runs from 0 again when the measurement starts, so that every case measures the
+    // same frames of the animation whatever its warm-up took (until stop 55 each case went on
+    // from its warm-up's last frame: a faster case measured a later part of the scene).
+    std::uint64_t sceneFrame = 0;
     Clock::time_point lastStart{};
     // Renders the next frame; returns the wall time since the previous frame's start (0 for the first).
     const auto step = [&] {
@@ -157,7 +161,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
         const Clock::time_point start = Clock::now();
         const double interval = frameNumber > 0 ? std::chrono::duration<double, std::milli>(start - lastStart).count() : 0.0;
         lastStart = start;
-        const float t = static_cast<float>(frameNumber) * settings.sceneStep;
+        const float t = static_cast<float>(sceneFrame++) * settings.sceneStep;
         engine->frame(t, settings.fixedCamera ? scene.camera : benchCamera(scene, t), w, h);
         pacer.submitted();
         ++frameNumber;
@@ -191,6 +195,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
 
     // Measurement.
     const std::uint64_t firstMeasured = frameNumber;
+    sceneFrame = 0;
     std::vector<double> frameMs;
     double triangles = 0;
     const Clock::time_point measureStart = Clock::now();

@@ -40,7 +40,8 @@ struct BenchSettings {
     int frames = 0;        // > 0: measure this many frames...
     double seconds = 2.0;  // ...else frames for this long (at least 3)
     double warmupSeconds = 1.0;  // at least this long, then until frame times settle (cap 3x)
-    float sceneStep = 1.0f / 60.0f;  // scene seconds per frame: every case sees the same motion
+    // Scene seconds per frame, from 0 at the first measured frame: every case sees the same motion.
+    float sceneStep = 1.0f / 60.0f;
     bool calibrate = false;  // also check every pass's query against a glFinish wall clock
     bool images = true;      // one picture per case (read back after timing)
     bool fixedCamera = false;  // the scene's camera throughout (peer comparisons), no path or orbit

@@ -236,3 +236,33 @@ string(FIND "${result}" "\"In rounds" at)
 if(NOT images EQUAL 2 OR at LESS 0)
   message(FATAL_ERROR "rounds' report.html: ${images} images, expected 2 (round 1's); a table headed 'In rounds' expected")
 endif()
+
+# Scene time starts from 0 at each case's first measured frame (--scene-step seconds per frame), so
+# every case measures the same frames whatever its warm-up took. A sphere in the spot's view until
+# t = 0.9 s, far off after 1 s; two warm-up frames (--warmup-seconds 0) at 0.5 s a frame: measured
+# at t = 0 and 0.5, the sphere is drawn into the map every frame (measured after the warm-up's
+# scene time, at 1 and 1.5 s, never).
+file(MAKE_DIRECTORY "${OUT}")
+file(WRITE "${OUT}/leaving.json" [=[{
+  "camera": { "position": [0, 4, 6], "target": [0, 0, 0], "fov_deg": 50 },
+  "lights": [ { "type": "spot", "position": [1, 6, 1], "direction": [-0.15, -1, -0.15], "angle_deg": 70,
+                "shadow": { "resolution": 256 } } ],
+  "objects": [ { "shape": "plane", "size": [10, 10] },
+               { "name": "sphere", "shape": "sphere", "radius": 0.5,
+                 "animation": [[0, 0, 1, 0], [0.9, 0, 1, 0], [1, 60, 1, 0], [3, 60, 1, 0]] } ] }]=])
+foreach(step 0.5 0.0001)
+  run_penumbra("${OUT}/scene-time-${step}" out "${PENUMBRA}" bench "${OUT}/leaving.json" --techniques hard --size 96x64
+               --frames 2 --warmup-seconds 0 --scene-step ${step} --no-images --out "${OUT}/scene-time-${step}")
+  file(READ "${OUT}/scene-time-${step}/bench.json" doc)
+  string(JSON recorded GET "${doc}" settings scene_step_seconds)
+  string(JSON triangles GET "${doc}" cases 0 shadow_triangles_per_frame)
+  set(triangles_${step} ${triangles})
+  if(step STREQUAL "0.5" AND NOT recorded STREQUAL "0.5")
+    message(FATAL_ERROR "--scene-step 0.5: bench.json's settings record ${recorded}")
+  endif()
+endforeach()
+# Nearly still (0.1 ms a frame) the sphere is drawn in every frame too: the same triangles.
+if(NOT triangles_0.5 EQUAL triangles_0.0001 OR NOT triangles_0.5 GREATER 100)
+  message(FATAL_ERROR "--scene-step 0.5: ${triangles_0.5} triangles per frame into the map, nearly still: ${triangles_0.0001}; "
+                      "expected the same, with the sphere's (> 100)")
+endif()
