@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace penumbra::shadows {
 
@@ -16,11 +17,18 @@ int tilesOver(int texels, int level) { return (texels + tileSide(level) - 1) / t
 int border(int level) { return tileSide(level) - gpu::kDepthTileInset; }
 }  // namespace
 
-void DepthTileBounds::ensure(int tilesAcross, int layers) {
-    if (tilesAcross == tilesAcross_ && layers == static_cast<int>(layers_.size())) return;
-    if (tilesAcross != tilesAcross_ || layers != layerCount_) {
+int DepthTileBounds::levelFor(float reachTexels) {
+    const float inset = static_cast<float>(gpu::kDepthTileInset), tile = static_cast<float>(gpu::kDepthTile);
+    int level = std::max(0, static_cast<int>(std::ceil(std::log2((reachTexels + 1e-3f + inset) / tile))));
+    if (static_cast<float>((gpu::kDepthTile << level) - gpu::kDepthTileInset) < reachTexels + 1e-3f) ++level;  // log2's rounding
+    return level;
+}
+
+void DepthTileBounds::ensure(int tilesAcross, int layers, int levels) {
+    if (tilesAcross == tilesAcross_ && layers == static_cast<int>(layers_.size()) && levels == levels_) return;
+    if (tilesAcross != tilesAcross_ || layers != layerCount_ || levels != levels_) {
         // Layers only for the slots in use: a 16384^2 sun alone needs 2048^2 tiles, 85 MiB, not 4 x that.
-        levels_ = 1 + std::countr_zero(static_cast<unsigned>(tilesAcross));
+        levels_ = levels;
         bounds_ = gl::Texture::create2DArray(GL_RGBA32F, tilesAcross, tilesAcross, layers, levels_);
         bounds_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
         // Bounds that never agree until a layer is made (and no undefined texels in a readback).
@@ -39,7 +47,7 @@ void DepthTileBounds::ensure(int tilesAcross, int layers) {
         }
 }
 
-void DepthTileBounds::update(const DepthAndTintMaps& maps) {
+void DepthTileBounds::update(const DepthAndTintMaps& maps, float reachTexels) {
     const ShadowSlots& slots = maps.slots();
     int widest = 0, layers = 0;
     for (std::size_t i = 0; i < slots.size(); ++i)
@@ -53,8 +61,11 @@ void DepthTileBounds::update(const DepthAndTintMaps& maps) {
         merge_ = gl::Program::build(
             {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/common/glsl/depth_tiles_merge.frag"});
     }
-    ensure(std::max(static_cast<int>(std::bit_ceil(static_cast<unsigned>(tilesOver(widest, 0)))), tilesAcross_),
-           std::max(layers, layerCount_));
+    const int across = std::max(static_cast<int>(std::bit_ceil(static_cast<unsigned>(tilesOver(widest, 0)))), tilesAcross_);
+    // A level the reach never asks for is not made: the lookup reads textureQueryLevels and runs
+    // its taps past the last level there is (one more than the reach needs, against rounding).
+    const int allLevels = 1 + std::countr_zero(static_cast<unsigned>(across));
+    ensure(across, std::max(layers, layerCount_), reachTexels < 0.0f ? allLevels : std::min(allLevels, levelFor(reachTexels) + 2));
     gl::DebugGroup group("depth tile bounds");
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     fullscreenVao_.bind();

@@ -32,8 +32,15 @@ namespace penumbra::shadows {
 
 class DepthTileBounds {
 public:
-    // Brings each 2D-mapped light's layer up to date with the depth `maps` hold this frame.
-    void update(const DepthAndTintMaps& maps);
+    // Brings each 2D-mapped light's layer up to date with the depth `maps` hold this frame, with
+    // the levels a lookup reaching up to `reachTexels` can read (tileAround in depth_tiles.glsl;
+    // < 0: every level). Where a kernel reaches a few texels, as PCF's default 1.5-texel radius
+    // does, one level serves: measured on llvmpipe, every further level cost a pass of 0.03-0.18 ms
+    // per light and frame while anything animated reached the map.
+    void update(const DepthAndTintMaps& maps, float reachTexels = -1.0f);
+    // The finest level whose tiles' border holds every texel within `reachTexels` of a receiver
+    // (depth_tiles.glsl's tileAround computes the same).
+    static int levelFor(float reachTexels);
     // The maps changed without update(): every layer is made again next time.
     void forget() { layers_.clear(); }
     void bind() const;  // to gpu::kUnitDepthTiles
@@ -48,13 +55,13 @@ private:
         std::vector<gl::Framebuffer> levelTargets;
         std::vector<gl::Texture> levelViews;  // each level alone: the next one's input, no feedback loop
     };
-    void ensure(int tilesAcross, int layers);
+    void ensure(int tilesAcross, int layers, int levels);
     void updateLayer(Layer& layer, const gl::Texture& depth, const TexelRect& changed);
 
     gl::Texture bounds_;
     int tilesAcross_ = 0;  // at level 0, a power of two
     int layerCount_ = 0;   // 2D slots 0 .. layerCount_ - 1 (never fewer than once needed)
-    int levels_ = 0;
+    int levels_ = 0;       // mip levels of bounds_: as many as the reach needs, at most 1 + log2(tilesAcross_)
     std::vector<Layer> layers_;
     gl::Program tiles_, merge_;
     gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons

@@ -12,7 +12,7 @@ class KernelTechnique : public SharedMapTechnique {
 public:
     void renderMaps(const ShadowFrame& frame) override {
         maps_.render(frame);
-        if (skipAgreeing_) tileBounds_.update(maps_);
+        if (skipAgreeing_) tileBounds_.update(maps_, tileReachTexels());
         else tileBounds_.forget();  // stale from here on: remade whole when turned on again
     }
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + tileBounds_.memoryBytes(); }
@@ -23,6 +23,9 @@ public:
     }
 
 protected:
+    // The farthest, along x or y, that the lookup asks tapsAgree() to bound (texels; < 0: no bound
+    // known, every level of the tile bounds is made).
+    virtual float tileReachTexels() const = 0;
     // `what`: which taps the lookup skips where the bounds show their answer.
     Parameter skipAgreeingParameter(const std::string& what) {
         return Parameter::flag("skip_agreeing_taps", skipAgreeing_, what + " (same pixels)");
