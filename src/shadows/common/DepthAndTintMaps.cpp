@@ -59,9 +59,9 @@ std::optional<glm::vec2> depthRange(const scene::Bounds& box, const glm::mat4& v
 
 // Whether every translucent caster that shares texels with an animated opaque one lies wholly
 // behind it, as the light sees them (boxes through `viewProj`, with a margin in window depth of 8
-// times the rounding of the tint's alpha there: half floats of 1 - depth). Then no animated caster has a translucent layer
-// in front of it, and a tint drawn over the still casters' depth alone gives every receiver the
-// light it gets from a tint drawn over every caster's:
+// times the rounding of the tint's alpha there: half floats of 1 - depth). Then no animated
+// caster has a translucent layer in front of it, and a tint drawn over the still casters' depth
+// alone gives every receiver the light it gets from a tint drawn over every caster's:
 // - an animated caster finds the nearest layer of its texels behind it, untinted either way (the
 //   layers behind it, which the still depth lets through, sit behind tintBehind's test);
 // - a receiver behind one is shadowed by the depth test, whatever the tint there;
@@ -286,10 +286,10 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere, cons
             // same light (translucentBehindMoving), in every frame alike, kept maps or not: then an
             // animated opaque caster changes nothing they draw. Maps other than the plain tint only
             // when their pass runs in between (translucentPass).
-            const bool overStillDrawn = translucentPass ? true : withTint_ && tintAlpha_ == TintAlpha::NearestLayer;
-            const bool translucentOverStill = overStillDrawn && !isEmpty(translucentTexels) && moving &&
-                                       translucentBehindMoving(frame.casterBoxes(movingOpaque), frame.casterBoxes(translucent), vp,
-                                                               ls.resolution);
+            const bool overStillDrawn = static_cast<bool>(translucentPass) || (withTint_ && tintAlpha_ == TintAlpha::NearestLayer);
+            const bool translucentOverStill =
+                overStillDrawn && !isEmpty(translucentTexels) && moving &&
+                translucentBehindMoving(frame.casterBoxes(movingOpaque), frame.casterBoxes(translucent), vp, ls.resolution);
             const std::uint64_t stillKey =
                 reuse ? util::Digest().add(frame.casterDigest({Casters::Opaque, region.cull, light, Motion::Still}), region.cull, po).value()
                       : 0;

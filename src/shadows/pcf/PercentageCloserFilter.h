@@ -23,12 +23,12 @@ public:
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override { return KernelTechnique::memoryBytes() + jitter_.memoryBytes(); }
     float shadowReachTexels() const override;
-    // lookup.glsl asks tapsAgree() for radius * uTapReach; a radius in world units has no bound in texels.
-    float tileReachTexels() const override { return radiusWorld_ > 0.0f ? -1.0f : radiusTexels_ * tapReach(); }
     float shadowReachDepth() const override { return receiverPlane_ ? 0.01f : 0.0f; }  // tapReceiverDepth's clamp
 
 protected:
     std::vector<Parameter> declareParameters() override;
+    // lookup.glsl asks tapsAgree() for radius * uTapReach; a radius in world units has no bound in texels.
+    float tileReachTexels() const override { return radiusWorld_ > 0.0f ? -1.0f : radiusTexels_ * tapReach(); }
 
 private:
     float tapReach() const;

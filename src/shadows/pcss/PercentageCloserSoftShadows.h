@@ -14,13 +14,13 @@ public:
     // The search and the filter reach no farther than their radius cap (with the lookup's 1 %
     // rounding), and each tap's compare a texel more.
     float shadowReachTexels() const override { return maxRadius_ * 1.01f + 2.0f; }
-    // The blocker search and the filter are both clamped to uMaxRadiusTexels (lookup.glsl).
-    float tileReachTexels() const override { return maxRadius_; }
     // The search and the filter compare the receiver's own depth at every tap.
     float shadowReachDepth() const override { return 0.0f; }
 
 protected:
     std::vector<Parameter> declareParameters() override;
+    // The blocker search and the filter are both clamped to uMaxRadiusTexels (lookup.glsl).
+    float tileReachTexels() const override { return maxRadius_; }
 
 private:
     static constexpr int kMaxTaps = 64;  // a cost bound only
