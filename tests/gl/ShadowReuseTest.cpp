@@ -106,6 +106,11 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapEveryFrame) {
     s.objects[4].animation.position = scene::Track({{0.0f, {-2.0f, 2.5f, 0.0f}}, {1.0f, {4.0f, 2.5f, 0.0f}}, {2.0f, {-2.0f, 2.5f, 0.0f}}});
     for (float t : {0.0f, 0.1f, 0.1f, 0.3f, 0.5f, 0.6f, 0.8f, 0.9f, 0.9f})
         expectSame(t, "the sphere crossing over the pane");
+    // Higher, wholly in front of the pane as the sun sees them while it crosses the pane's texels:
+    // translucent casters are drawn over the still casters' depth, and the sphere's texels are
+    // no longer redrawn in the tint and CSSM's map (DepthAndTintMaps::translucentRedo).
+    s.objects[4].animation.position = scene::Track({{0.0f, {-2.0f, 3.2f, 1.2f}}, {1.0f, {4.0f, 3.2f, 1.2f}}, {2.0f, {-2.0f, 3.2f, 1.2f}}});
+    for (float t : {0.0f, 0.3f, 0.45f, 0.55f, 0.55f, 0.65f, 0.9f, 1.1f}) expectSame(t, "the sphere crossing high over the pane");
 }
 
 // Animated translucent casters: the tint and CSSM's coloured map keep what the still casters drew
