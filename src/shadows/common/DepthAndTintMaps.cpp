@@ -47,8 +47,7 @@ std::vector<gl::Framebuffer> depthOnlyFaces(const gl::Texture& map, bool cube, c
 // behind a perspective light's eye, where depth flips).
 std::optional<glm::vec2> depthRange(const scene::Bounds& box, const glm::mat4& viewProj) {
     glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y, (c & 4) ? box.max.z : box.min.z);
+    for (const glm::vec3& corner : box.corners()) {
         const glm::vec4 clip = viewProj * glm::vec4(corner, 1.0f);
         if (clip.w <= 0.0f) return std::nullopt;
         const float z = 0.5f * clip.z / clip.w + 0.5f;  // window depth (clip z in [-w, w])
@@ -200,11 +199,7 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     if (!isEmpty(restore))
         glCopyImageSubData(m.still.id(), target, 0, restore.x, restore.y, z, m.depth.id(), target, 0, restore.x, restore.y, z,
                            restore.z - restore.x, restore.w - restore.y, 1);
-    if (!movingLater) {
-        m.depthFaces[face].bind();
-        const ScopedScissor movedOnly(moved, !region.cropped);
-        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
-    }
+    if (!movingLater) drawMovingOver(frame, m, face, light, region);
     m.depthHolds[face] = 0;
     m.depthOverStill[face] = stillKey;
     m.depthMovedIn[face] = moved;
