@@ -25,6 +25,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
         "--redraw-shadow-maps", [&options] { options.reuseStillCasters = false; },
         "redraw every shadow map every frame (default: keep what still casters drew while they and the light stay put)");
     command.add_flag_callback(
+        "--refit-sun-box", [&options] { options.holdSunBox = false; },
+        "fit each directional light's box to the view every frame (default: keep it while it holds the view and move "
+        "it with room to spare, so that a moving camera has the sun's map drawn whole every few frames, not every frame)");
+    command.add_flag_callback(
         "--whole-casters", [&options] { options.clusterCasters = false; },
         "draw big meshes whole into every shadow map they reach (default: cull their clusters per cascade, layer and cube face)");
     command.add_flag_callback(

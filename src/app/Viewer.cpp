@@ -167,6 +167,7 @@ void drawPanel(render::Renderer& renderer, const render::RegionView* regions, Vi
         int anisotropy = renderer.options().anisotropy;
         if (ImGui::SliderInt("anisotropy", &anisotropy, 1, 16)) renderer.setAnisotropy(anisotropy);
         ImGui::Checkbox("keep still casters' shadow maps", &renderer.options().reuseStillCasters);
+        ImGui::Checkbox("hold the sun's box while it holds the view", &renderer.options().holdSunBox);
         ImGui::Checkbox("animate (space)", &state.animate);
         ImGui::SliderFloat("time", &state.time, 0.0f, 60.0f);
         int mode = static_cast<int>(controller.mode());
@@ -430,7 +431,10 @@ int runViewer(const ViewerOptions& opts) {
             if (pressed(GLFW_KEY_G) && state.reference) state.showHeat = !state.showHeat;
             if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right) / off
                 if (right) right.reset();
-                else right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
+                else {
+                    right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
+                    right->holdSunBoxOf(renderer);  // both sides' maps look at the same box
+                }
             }
             if (pressed(GLFW_KEY_K) && !scene.regions.empty()) state.byRegion = !state.byRegion;
             if (pressed(GLFW_KEY_X) && right) state.swapSides = true;  // done before the next frame binds them

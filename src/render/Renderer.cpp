@@ -209,11 +209,15 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     const glm::mat4 cameraViewProj = camera.projection(aspect) * camera.view();
     const std::vector<Draw> draws = gpu_.draws(time, camera.position);
 
-    // Light spaces for this frame: objects move, so the directional fit follows them.
+    // Light spaces for this frame: objects move, so the directional fit follows them; a sun's box
+    // is held from last frame's while it still holds the view (RenderOptions::holdSunBox).
     const scene::Bounds bounds = scene_.boundsAt(time);
     std::vector<shadows::LightSpace> spaces;
-    for (const auto& light : scene_.lights)
-        spaces.push_back(shadows::computeLightSpace(light, effectiveResolution(light), bounds, camera, aspect));
+    if (!options_.holdSunBox || lastSpaces_.size() != scene_.lights.size()) lastSpaces_.clear();
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i)
+        spaces.push_back(shadows::computeLightSpace(scene_.lights[i], effectiveResolution(scene_.lights[i]), bounds, camera,
+                                                    aspect, lastSpaces_.empty() ? nullptr : &lastSpaces_[i]));
+    lastSpaces_ = spaces;
     slots_ = shadows::ShadowSlots::assign(scene_.lights);
     const gpu::LightBlock block = packLights(scene_.lights, spaces, slots_);
     lightBlock_.update(0, sizeof(block), &block);

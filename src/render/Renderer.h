@@ -63,6 +63,12 @@ struct RenderOptions {
     // map and those casters stay put, and redraw only what moves (shadows::ShadowFrame). false
     // redraws every map every frame: the bare per-frame cost, for peer comparisons.
     bool reuseStillCasters = true;
+    // Keep a directional light's box across frames while it still holds what the camera sees, and
+    // move it with room to spare (shadows::computeLightSpace's `previous`): a moving camera then
+    // has the sun's map drawn whole every few frames instead of every frame, at up to one size
+    // step and kBoxSlack of its resolution. false fits the box to each frame's view alone
+    // (`--refit-sun-box`); the first frame, and any single frame, is fitted so either way.
+    bool holdSunBox = true;
     // Cut mesh parts of 32768 triangles or more into clusters that each shadow pass culls against
     // its cascade, layer or cube face (render/MeshClusters.h). false draws such parts whole: the
     // same maps, for measuring what the clusters save. Read when the Renderer is made.
@@ -152,6 +158,11 @@ public:
     std::uint64_t framesRendered() const { return frameIndex_; }
     // Triangles drawn into shadow maps in the last frame, per light (all passes and faces).
     const std::vector<std::size_t>& shadowTriangles() const { return shadowTriangles_; }
+    // Where each light's map looked in the last frame.
+    const std::vector<shadows::LightSpace>& lightSpaces() const { return lastSpaces_; }
+    // Go on from `other`'s last frame (RenderOptions::holdSunBox): a renderer made beside another
+    // mid-way (the split view's second side) then holds the same sun's box as it.
+    void holdSunBoxOf(const Renderer& other) { lastSpaces_ = other.lastSpaces_; }
     // How the last frame shaded its opaque draws where translucent casters may tint them
     // (RenderOptions::tintOnlyWhereReached, render/TintReach.h): draws with the whole lookup, with
     // the untinted program, with the behind-layers one, and draws split on the screen between them
@@ -282,6 +293,7 @@ private:
     gl::Framebuffer releaseTarget_;
     int targetW_ = 0, targetH_ = 0;
     shadows::ShadowSlots slots_;  // this frame's shadow slots and sun
+    std::vector<shadows::LightSpace> lastSpaces_;  // last frame's, per light (RenderOptions::holdSunBox reads them)
     std::vector<std::size_t> shadowTriangles_;
     FrameTimer timer_;
     std::uint32_t frameIndex_ = 0;

@@ -22,14 +22,27 @@ struct LightSpace {
     int faceCount = 1;                      // 6 for point lights (cube map)
     std::array<glm::mat4, 6> viewProj{};    // world -> clip, per face
     glm::mat4 shadowMatrix{1.0f};           // world -> [0,1]^3 texture space (2D lights)
+    // Directional lights: the light's view (world -> light space; x and y depend on its rotation
+    // alone) and the box's corner and size across the light in it (x, y: lo; z, w: size), which
+    // the next frame's fit may keep.
+    glm::mat4 lightView{1.0f};
+    glm::vec4 box{0.0f};
 };
 
 // Directional lights get an orthographic box that holds every caster in the scene bounds and,
 // across the light, only what the camera frustum can see (casters behind receivers along the
 // light stay in, since they lie in the same light-space column). Spot and projector lights use
 // their cone; point lights the six cube faces.
+// `previous` (may be null): the same light's space last frame. A directional light then keeps
+// last frame's box across the light, per axis, while it still holds what the camera sees and is
+// at most one size step larger than a fit would be; when it must move, the new box leaves
+// kBoxSlack of room around the view, so that a moving camera moves it (and has its map drawn
+// whole) every few frames instead of every frame. Without `previous`, the tight fit.
 LightSpace computeLightSpace(const scene::Light& light, int resolution, const scene::Bounds& sceneBounds,
-                             const scene::Camera& camera, float aspect);
+                             const scene::Camera& camera, float aspect, const LightSpace* previous = nullptr);
+
+// The room a moved directional box leaves around the view, as a share of the view's extent per axis.
+extern const float kBoxSlack;
 
 // Maps clip space [-1,1]^3 to texture space [0,1]^3.
 extern const glm::mat4 kClipToTexture;

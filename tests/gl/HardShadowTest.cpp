@@ -5,6 +5,8 @@
 #include "GlTestSupport.h"
 
 #include "gl/Debug.h"
+#include "render/Offscreen.h"
+#include "shadows/LightSpace.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
@@ -282,6 +284,55 @@ INSTANTIATE_TEST_SUITE_P(Techniques, TranslucentReceiver,
                                            TranslucentReceiverCase{"cssm1", 0.06f},
                                            TranslucentReceiverCase{"cssm2", 0.06f}),
                          [](const auto& info) { return testNameOf(info.param.technique); });
+
+// A camera panning over a ground far wider than its view, so that the view, not the scene, bounds
+// the sun's box. Held (RenderOptions::holdSunBox), the box moves, and so the sun's map is drawn
+// whole, in a few frames; fitted afresh each frame, in most. In every frame, either way, the
+// square's shadow covers the pixels the rays say (±2 px).
+struct PanResult {
+    int mapsDrawn = 0;
+    float coarsestTexel = 0.0f, finestTexel = 1e9f;
+};
+
+PanResult panOverTheSquare(bool holdSunBox, int frames) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [2, 12, -5], "target": [2, 0, -5], "up": [0, 0, -1], "fov_deg": 60, "near": 0.5, "far": 40 },
+      "lights": [ { "type": "directional", "direction": [1, -1, 0], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [400, 400] }, )" + std::string(kSquare) + R"( ] })");
+    render::RenderOptions options;
+    options.output = OutputMode::Visibility;
+    options.holdSunBox = holdSunBox;
+    render::Renderer renderer(s, options);
+    const int w = 128, h = 128;
+    render::OffscreenTarget target(w, h);
+    PanResult result;
+    for (int frame = 0; frame < frames; ++frame) {
+        s.camera.position.z = s.camera.target.z = -5.0f + 0.5f * static_cast<float>(frame);  // 5 texels a frame
+        renderer.render(0.0f, s.camera, w, h, target.framebuffer());
+        result.mapsDrawn += frame > 0 && renderer.shadowTriangles().at(0) > 0;
+        const Frame f{w, h, renderer.readLinear()};
+        const MaskComparison c = compareMasks(expectedShadow(s, kSquareBox, w, h), renderedShadow(f), w, h, 2);
+        EXPECT_GT(c.expectedOn, 300) << "frame " << frame;
+        EXPECT_EQ(c.mismatchesAwayFromEdges, 0) << "frame " << frame << (holdSunBox ? ", held box" : ", fitted box");
+        const float texel = renderer.lightSpaces().at(0).texelScale;
+        result.coarsestTexel = std::max(result.coarsestTexel, texel);
+        result.finestTexel = std::min(result.finestTexel, texel);
+    }
+    return result;
+}
+
+TEST(SunBox, AHeldBoxIsDrawnAgainEveryFewFramesOfAPanAndShadowsWhereRaysSay) {
+    const int frames = 21;
+    const PanResult fitted = panOverTheSquare(false, frames), held = panOverTheSquare(true, frames);
+    std::printf("20 pan frames: the sun's map drawn whole in %d (box fitted each frame), %d (held); texel %.4f-%.4f "
+                "against %.4f-%.4f m\n", fitted.mapsDrawn, held.mapsDrawn, held.finestTexel, held.coarsestTexel,
+                fitted.finestTexel, fitted.coarsestTexel);
+    EXPECT_GE(fitted.mapsDrawn, 10) << "the pan must move a fitted box in most frames";
+    EXPECT_LE(held.mapsDrawn * 3, fitted.mapsDrawn);
+    // What holding costs: at most a step of the size ladder and the slack over a fitted box.
+    EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * std::exp2(1.0f / 8.0f) * (1.0f + shadows::kBoxSlack) * 1.001f);
+    EXPECT_EQ(gl::debugErrorCount(), 0);
+}
 
 }  // namespace
 }  // namespace penumbra::test

@@ -114,6 +114,49 @@ TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
     EXPECT_LT(moved, 30) << "the box must not follow every sub-texel step";
 }
 
+// Holding the box (computeLightSpace's `previous`, RenderOptions::holdSunBox) under a camera that
+// flies 4 texels a frame along the long scene: the held box moves in a third of the frames a box
+// fitted afresh moves in (every other), or fewer; it always holds the part of the camera's frustum inside the
+// scene; it is at most a size step and the slack coarser; and while its size stays, the map's
+// content moves by whole 8-texel tiles.
+TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
+    LongScene s;
+    s.camera.far = 60.0f;
+    const int res = 1024;
+    const float aspect = 16.0f / 9.0f;
+    LightSpace held = computeLightSpace(s.sun, res, s.bounds, s.camera, aspect);
+    LightSpace fitted = held;
+    const glm::vec3 step(0.0f, 0.0f, -4.0f * held.texelScale);
+    const glm::vec3 probe(1.0f, 0.0f, -40.0f);
+    int heldMoves = 0, fittedMoves = 0;
+    for (int k = 1; k <= 100; ++k) {
+        scene::Camera camera = s.camera;
+        camera.position += step * static_cast<float>(k);
+        camera.target += step * static_cast<float>(k);
+        const LightSpace heldNow = computeLightSpace(s.sun, res, s.bounds, camera, aspect, &held);
+        const LightSpace fittedNow = computeLightSpace(s.sun, res, s.bounds, camera, aspect);
+        heldMoves += heldNow.viewProj[0] != held.viewProj[0];
+        fittedMoves += fittedNow.viewProj[0] != fitted.viewProj[0];
+        const glm::mat4 cameraViewProj = camera.projection(aspect) * camera.view();
+        for (const glm::vec3& p : frustumInsideBox(cameraViewProj, s.bounds)) {
+            const glm::vec2 uv = texelOf(heldNow, p) / static_cast<float>(res);
+            ASSERT_TRUE(uv.x > -1e-4f && uv.x < 1.0001f && uv.y > -1e-4f && uv.y < 1.0001f)
+                << "frame " << k << ": a point the camera sees lies outside the held box (" << uv.x << ", " << uv.y << ")";
+        }
+        EXPECT_LE(heldNow.texelScale, fittedNow.texelScale * std::exp2(1.0f / 8.0f) * (1.0f + kBoxSlack) * 1.001f) << "frame " << k;
+        if (heldNow.box.z == held.box.z && heldNow.box.w == held.box.w) {
+            const glm::vec2 tiles = (texelOf(heldNow, probe) - texelOf(held, probe)) / 8.0f;
+            EXPECT_NEAR(tiles.x, std::round(tiles.x), 1e-3f) << "frame " << k;
+            EXPECT_NEAR(tiles.y, std::round(tiles.y), 1e-3f) << "frame " << k;
+        }
+        held = heldNow;
+        fitted = fittedNow;
+    }
+    std::printf("100 frames flying 4 texels each: the box moved %d times held, %d times fitted afresh\n", heldMoves, fittedMoves);
+    EXPECT_GE(fittedMoves, 45) << "a fitted box moves by 8 texels: every other frame";
+    EXPECT_LE(heldMoves * 3, fittedMoves);
+}
+
 // frustumInsideBox spans exactly the part of the frustum inside the box: the frustum's corners
 // when the box holds it, the box's corners when the frustum holds the box, nothing when apart,
 // and for a slab through the frustum the slab's cut of it.
