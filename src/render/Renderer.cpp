@@ -272,6 +272,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return digest.value();
         };
         frame.reuseStillCasters = options_.reuseStillCasters;
+        frame.holdSunBox = options_.holdSunBox;
         frame.translucentCasters = translucentCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             if (selection.lightViewProj) {

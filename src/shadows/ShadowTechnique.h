@@ -129,6 +129,9 @@ struct ShadowFrame {
     std::function<std::uint64_t(const CasterSelection& selection)> casterDigest;
     // false: every map is redrawn every frame (`--redraw-shadow-maps`: the bare per-frame cost).
     bool reuseStillCasters = true;
+    // Hold a directional light's boxes across frames while they hold the view (the renderer's
+    // RenderOptions::holdSunBox; cascades keep theirs as the plain map's LightSpace does).
+    bool holdSunBox = true;
     // Some object casts a shadow through a translucent material (the lookups' SCENE_TRANSLUCENT_CASTERS).
     bool translucentCasters = true;
     // Draws the visible opaque surfaces (every one, or only object `onlyObject` when >= 0), each

@@ -4,6 +4,7 @@
 #include "shadows/LightSpace.h"
 #include "shadows/cascaded/CascadeFit.h"
 
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -155,6 +156,52 @@ TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
     std::printf("100 frames flying 4 texels each: the box moved %d times held, %d times fitted afresh\n", heldMoves, fittedMoves);
     EXPECT_GE(fittedMoves, 45) << "a fitted box moves by 8 texels: every other frame";
     EXPECT_LE(heldMoves * 3, fittedMoves);
+}
+
+// Held cascades (fitCascade's `previous`) under a camera flying along the long scene: each box
+// holds its slice's corners (to within the texel its centre snaps by), is at most the slack
+// coarser than a fitted one, and the nearest moves in a third of the frames a fitted one moves in,
+// or fewer.
+TEST(Cascades, AHeldCascadeMovesRarelyAndHoldsItsSlice) {
+    LongScene s;
+    const int res = 1024, count = 4;
+    const float aspect = 16.0f / 9.0f;
+    const auto splits = cascadeSplits(s.camera.near, 200.0f, count, 0.75f);
+    const auto fitAll = [&](const scene::Camera& camera, const std::vector<Cascade>* previous) {
+        std::vector<Cascade> cascades;
+        for (std::size_t c = 0; c < count; ++c)
+            cascades.push_back(fitCascade(s.sun, camera, aspect, splits[c], splits[c + 1], s.bounds, res, true,
+                                          previous ? &(*previous)[c] : nullptr));
+        return cascades;
+    };
+    std::vector<Cascade> held = fitAll(s.camera, nullptr), fitted = held;
+    const float nearTexel = held[0].texelWorld;
+    std::array<int, count> heldMoves{}, fittedMoves{};
+    for (int k = 1; k <= 100; ++k) {
+        scene::Camera camera = s.camera;
+        const glm::vec3 step(0.3f * nearTexel, 0.0f, -2.0f * nearTexel);  // forward and a little sideways
+        camera.position += step * static_cast<float>(k);
+        camera.target += step * static_cast<float>(k);
+        const std::vector<Cascade> heldNow = fitAll(camera, &held), fittedNow = fitAll(camera, nullptr);
+        for (std::size_t c = 0; c < count; ++c) {
+            heldMoves[c] += heldNow[c].viewProj != held[c].viewProj;
+            fittedMoves[c] += fittedNow[c].viewProj != fitted[c].viewProj;
+            const float tolerance = 1.5f / static_cast<float>(res);
+            for (const glm::vec3& p : frustumCorners(glm::perspective(glm::radians(camera.fovDeg), aspect, splits[c], splits[c + 1]) * camera.view())) {
+                const glm::vec4 uv = heldNow[c].shadowMatrix * glm::vec4(p, 1.0f);
+                ASSERT_TRUE(uv.x > -tolerance && uv.x < 1.0f + tolerance && uv.y > -tolerance && uv.y < 1.0f + tolerance)
+                    << "frame " << k << ", cascade " << c << ": a corner of its slice outside the held box (" << uv.x << ", " << uv.y << ")";
+            }
+            EXPECT_LE(heldNow[c].texelWorld, fittedNow[c].texelWorld * (1.0f + kBoxSlack) + 2.0f / 16.0f / static_cast<float>(res))
+                << "frame " << k << ", cascade " << c;
+        }
+        held = heldNow;
+        fitted = fittedNow;
+    }
+    std::printf("100 frames flying 2 texels of the nearest cascade each: cascade moves held %d %d %d %d, fitted %d %d %d %d\n",
+                heldMoves[0], heldMoves[1], heldMoves[2], heldMoves[3], fittedMoves[0], fittedMoves[1], fittedMoves[2], fittedMoves[3]);
+    EXPECT_GE(fittedMoves[0], 50);
+    EXPECT_LE(heldMoves[0] * 3, fittedMoves[0]);
 }
 
 // frustumInsideBox spans exactly the part of the frustum inside the box: the frustum's corners

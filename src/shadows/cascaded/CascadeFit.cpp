@@ -23,25 +23,36 @@ std::vector<float> cascadeSplits(float n, float f, int m, float lambda) {
 }
 
 Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear, float splitFar,
-                   const scene::Bounds& sceneBounds, int res, bool stabilize) {
+                   const scene::Bounds& sceneBounds, int res, bool stabilize, const Cascade* previous) {
     const glm::vec3 dir = light.direction;
     // A light view through the world origin: only its orientation matters; positions are
     // expressed in it so that texel snapping is relative to a fixed grid.
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), dir, anyPerpendicular(dir));
     const auto corners = frustumCorners(glm::perspective(glm::radians(camera.fovDeg), aspect, splitNear, splitFar) * camera.view());
 
-    glm::vec2 lo, hi;
+    glm::vec2 lo, hi, boxCentre(0.0f);
+    float half = 0.0f;
     if (stabilize) {
         glm::vec3 centre(0.0f);
         for (const auto& c : corners) centre += c / 8.0f;
         float radius = 0.0f;
         for (const auto& c : corners) radius = std::max(radius, glm::length(c - centre));
         radius = std::ceil(radius * 16.0f) / 16.0f;  // quantised: rounding noise must not resize the box
-        const float texel = 2.0f * radius / static_cast<float>(res);
-        glm::vec2 centreLs = glm::vec2(view * glm::vec4(centre, 1.0f));
-        centreLs = glm::floor(centreLs / texel) * texel;  // whole texels: the grid never slides
-        lo = centreLs - radius;
-        hi = centreLs + radius;
+        const glm::vec2 centreLs = glm::vec2(view * glm::vec4(centre, 1.0f));
+        const float moved = std::ceil(radius * (1.0f + kBoxSlack) * 16.0f) / 16.0f;
+        const bool holds = previous && previous->direction == dir && previous->halfSize >= radius && previous->halfSize <= moved &&
+                           glm::all(glm::lessThanEqual(glm::abs(centreLs - previous->centre),
+                                                       glm::vec2(previous->halfSize - radius + 2.0f * previous->halfSize / static_cast<float>(res))));
+        if (holds) {
+            half = previous->halfSize;
+            boxCentre = previous->centre;
+        } else {
+            half = previous ? moved : radius;
+            const float texel = 2.0f * half / static_cast<float>(res);
+            boxCentre = glm::floor(centreLs / texel) * texel;  // whole texels: the grid never slides
+        }
+        lo = boxCentre - half;
+        hi = boxCentre + half;
     } else {
         lo = glm::vec2(std::numeric_limits<float>::max());
         hi = glm::vec2(std::numeric_limits<float>::lowest());
@@ -61,6 +72,9 @@ Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float
     c.viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, c.depthNear, c.depthFar) * view;
     c.shadowMatrix = kClipToTexture * c.viewProj;
     c.texelWorld = std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(res);
+    c.centre = boxCentre;
+    c.halfSize = half;
+    c.direction = dir;
     return c;
 }
 

@@ -20,6 +20,10 @@ struct Cascade {
     float splitNear = 0, splitFar = 0;
     float texelWorld = 0;          // world size of one shadow texel
     float depthNear = 0, depthFar = 1;
+    // Stabilised: the box's centre and half its side in the view along `direction` (held by the next fit).
+    glm::vec2 centre{0.0f};
+    float halfSize = 0;
+    glm::vec3 direction{0.0f};
 };
 
 // One cascade for the camera-frustum slice [splitNear, splitFar]. Stabilised: the box is the
@@ -27,7 +31,13 @@ struct Cascade {
 // texels in light space (independent of sub-texel camera motion), so shadows do not shimmer.
 // Unstabilised: the tightest box around the slice (sharper, but it swims as the camera moves).
 // Depth always spans every caster in `scene`.
+// `previous` (stabilised only; may be null): the same cascade last frame, at the same resolution.
+// Its box is kept while it still holds the slice's sphere (to within the texel its centre snaps
+// by) and is no larger than a moved one; a moved box leaves kBoxSlack of the radius as room, so
+// that a moving camera redraws the cascade every few frames, not every frame (as LightSpace's
+// plain sun box). Without it, the tight box.
 Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float aspect, float splitNear,
-                   float splitFar, const scene::Bounds& scene, int resolution, bool stabilize);
+                   float splitFar, const scene::Bounds& scene, int resolution, bool stabilize,
+                   const Cascade* previous = nullptr);
 
 }  // namespace penumbra::shadows

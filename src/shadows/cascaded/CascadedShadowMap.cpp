@@ -2,6 +2,7 @@
 
 #include "gl/Debug.h"
 #include "gpu/ShaderContract.h"
+#include "shadows/LightSpace.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
@@ -35,6 +36,8 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     const scene::Camera& cam = *frame.camera;
     if (!freeze_ || static_cast<int>(fitted_.size()) != count || fittedResolution_ != res) {
+        // Last frame's boxes, held while they hold their slices (fitCascade's `previous`).
+        const std::vector<Cascade> last = frame.holdSunBox && stabilize_ && fittedResolution_ == res ? fitted_ : std::vector<Cascade>{};
         fittedResolution_ = res;
         float near = cam.near, far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
         if (sdsm_ && frame.drawSurfaces)
@@ -50,7 +53,8 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
             const auto i = static_cast<std::size_t>(c);
             const float a = splits_[i], b = splits_[i + 1];
             const auto slice = [&](float n, float f) { return glm::perspective(glm::radians(cam.fovDeg), frame.aspect, n, f) * cam.view(); };
-            fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_));
+            fitted_.push_back(fitCascade(sun, cam, frame.aspect, a, b, frame.sceneBounds, res, stabilize_,
+                                         i < last.size() ? &last[i] : nullptr));
             slices_.push_back(frustumCorners(slice(a, b)));
             // The lookup blends cascade c - 1 into c over the last `blend` of slice c - 1.
             readSlices_.push_back(slice(c > 0 ? a - blend_ * (a - splits_[i - 1]) : a, b));
@@ -60,7 +64,11 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
-    cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res));
+    // Held boxes (fitCascade's `previous`) leave the slice room to move by kBoxSlack / 2 of the
+    // box each way: the layers are drawn with as much room around their reads.
+    const bool held = frame.holdSunBox && stabilize_ && !freeze_;
+    cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res),
+                     held ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
 }
 
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of

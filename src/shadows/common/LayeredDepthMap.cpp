@@ -11,7 +11,7 @@ namespace penumbra::shadows {
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
                              const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes,
-                             const std::vector<TexelRect>& readTexels) {
+                             const std::vector<TexelRect>& readTexels, int readRoom) {
     const int count = std::clamp(static_cast<int>(viewProj.size()), 1, kMaxLayers);
     if (res != resolution_ || count != layers_) {
         texture_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, count);
@@ -29,6 +29,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         resolution_ = res;
         layers_ = count;
         holds_.assign(static_cast<std::size_t>(count), 0);
+        drawn_.assign(static_cast<std::size_t>(count), TexelRect(0));
     }
     gl::unbindTextureUnits(gpu::kLightingUnits);  // see DepthAndTintMaps::render
     gl::PassState pass = gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y);
@@ -42,15 +43,26 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         // culling it per object leaves the map unchanged.
         const bool cropped = l < readTexels.size();
         const TexelRect read = cropped ? readTexels[l] : TexelRect(0, 0, res, res);
-        const CasterSelection casters{Casters::Opaque, cropped && !isEmpty(read) ? cropTo(read, res) * viewProj[l] : viewProj[l],
-                                      frame.slots->sun, Motion::Any, viewProj[l], true};
-        const std::uint64_t key =
-            reuse ? util::Digest().add(frame.casterDigest(casters), viewProj[l], clipPlane, light.shadow.polygonOffset, read).value()
-                  : 0;
-        if (key != 0 && key == holds_[l]) continue;
-        holds_[l] = key;
-        if (isEmpty(read)) continue;  // nothing reads this layer: its stale texels stay unread
-        const ScopedScissor scissor(read, cropped);
+        // What drawing the casters that reach `rect` of the layer would write there.
+        const auto selection = [&](const TexelRect& rect) {
+            return CasterSelection{Casters::Opaque, cropped && !isEmpty(rect) ? cropTo(rect, res) * viewProj[l] : viewProj[l],
+                                   frame.slots->sun, Motion::Any, viewProj[l], true};
+        };
+        const auto keyOf = [&](const TexelRect& rect) {
+            return reuse ? util::Digest().add(frame.casterDigest(selection(rect)), viewProj[l], clipPlane, light.shadow.polygonOffset, rect).value()
+                         : std::uint64_t{0};
+        };
+        // Kept while it is unchanged and its reads lie in what was drawn last.
+        const bool unchanged = holds_[l] != 0 && keyOf(drawn_[l]) == holds_[l];
+        if (unchanged && intersection(read, drawn_[l]) == read) continue;
+        // With `readRoom`, drawn with that room around the reads, so that a layer whose box is held
+        // while the camera moves (fitCascade's `previous`) is kept until its reads leave it.
+        const TexelRect draw = cropped ? grown(read, glm::ivec2(readRoom), res) : read;
+        const CasterSelection casters = selection(draw);
+        holds_[l] = keyOf(draw);
+        drawn_[l] = draw;
+        if (isEmpty(draw)) continue;  // nothing reads this layer: its stale texels stay unread
+        const ScopedScissor scissor(draw, cropped);
         layerTargets_[l].beginDepthPass(res, res);
         casters_.set("uClipPlane", clipPlane);
         frame.drawCasters(casters_, casters);

@@ -5,8 +5,9 @@
 // 2048^2: a single pass instancing each triangle into every layer through a geometry shader
 // (invocations = 16) cost lispsm 1845 ms and cascaded 2006 ms against hard's 112 ms (issue 15).
 // A layer whose volume, clip plane and casters (ShadowFrame::casterDigest, animated ones with
-// their current placement) are as in the last frame is kept (ShadowFrame::reuseStillCasters):
-// the layers follow the camera, so they are kept while it and what they see stand still.
+// their current placement) are as in the last frame, and whose texels read lie in those last
+// drawn, is kept (ShadowFrame::reuseStillCasters): kept while the camera and what the layer sees
+// stand still, or while the camera moves within a held cascade box (fitCascade's `previous`).
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
@@ -25,9 +26,14 @@ public:
     // Opaque casters of `frame` into layer i through viewProj[i]. clipPlanes (optional, world
     // space, one per layer) keep only the half-space dot(plane, P) >= 0. readTexels (optional,
     // one per layer): the only texels of the layer any lookup reads; the casters are culled to
-    // them and drawn scissored to them (an empty one: the layer is not drawn at all).
+    // them and drawn scissored to them (an empty one: the layer is not drawn at all). readRoom:
+    // texels drawn around them too, for layers whose boxes are held while the camera moves
+    // (cascades); a layer is kept while it is unchanged and its reads lie in what it drew last.
+    // Without room, a moving camera's reads leave a held layer at once; with room always, layers
+    // whose boxes move every frame pay for it every frame (the default orbit at 0.125 s a frame,
+    // cascaded's shadow pass 8.7-9.8 -> 11.5-11.9 ms on llvmpipe with 64 texels, boxes refitted).
     void render(const ShadowFrame& frame, const scene::Light& light, int resolution, const std::vector<glm::mat4>& viewProj,
-                const std::vector<glm::vec4>& clipPlanes = {}, const std::vector<TexelRect>& readTexels = {});
+                const std::vector<glm::vec4>& clipPlanes = {}, const std::vector<TexelRect>& readTexels = {}, int readRoom = 0);
     void bind(unsigned unit) const { texture_.bind(unit); }
     bool empty() const { return texture_.id() == 0; }
     int layers() const { return layers_; }
@@ -39,6 +45,7 @@ private:
     gl::Texture view_;  // layer 0 as a plain 2D texture for the debug overlay
     std::vector<gl::Framebuffer> layerTargets_;  // one depth-only framebuffer per layer
     std::vector<std::uint64_t> holds_;           // per layer: the digest of what it holds (0: unknown)
+    std::vector<TexelRect> drawn_;               // per layer: the texels last drawn (the rest is stale)
     int resolution_ = 0, layers_ = 0;
     DepthCasterProgram casters_;
 };
