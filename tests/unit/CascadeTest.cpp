@@ -41,6 +41,13 @@ struct LongScene {
     }
 };
 
+// `camera` with its position and target moved by `by`.
+scene::Camera movedBy(scene::Camera camera, const glm::vec3& by) {
+    camera.position += by;
+    camera.target += by;
+    return camera;
+}
+
 TEST(Cascades, NearTexelsAreFarDenserThanOnePlainMapOfTheSameMemory) {
     const LongScene s;
     const int res = 2048, count = 4;
@@ -60,10 +67,7 @@ TEST(Cascades, StabilisationIgnoresSubTexelCameraMotion) {
     const auto splits = cascadeSplits(s.camera.near, 200.0f, 4, 0.75f);
     const Cascade before = fitCascade(s.sun, s.camera, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
     // Move the camera sideways by 0.3 of a texel of this cascade.
-    scene::Camera moved = s.camera;
-    const glm::vec3 step(0.3f * before.texelWorld, 0.0f, 0.0f);
-    moved.position += step;
-    moved.target += step;
+    const scene::Camera moved = movedBy(s.camera, glm::vec3(0.3f * before.texelWorld, 0.0f, 0.0f));
     const Cascade after = fitCascade(s.sun, moved, 1.5f, splits[1], splits[2], s.bounds, 1024, true);
     EXPECT_EQ(before.viewProj, after.viewProj) << "shimmer: the stabilised box moved";
     const Cascade looseBefore = fitCascade(s.sun, s.camera, 1.5f, splits[1], splits[2], s.bounds, 1024, false);
@@ -80,6 +84,14 @@ glm::vec2 texelOf(const LightSpace& ls, const glm::vec3& p) {
     return glm::vec2(ls.shadowMatrix * glm::vec4(p, 1.0f)) * static_cast<float>(ls.resolution);
 }
 
+// Between two fits of one size, the world point `probe` stays on its texel or moves by whole
+// 8-texel tiles (the snapping grid, CSSM's tiles).
+void expectWholeTiles(const LightSpace& before, const LightSpace& now, const glm::vec3& probe, int frame) {
+    const glm::vec2 tiles = (texelOf(now, probe) - texelOf(before, probe)) / 8.0f;
+    EXPECT_NEAR(tiles.x, std::round(tiles.x), 1e-3f) << "frame " << frame;
+    EXPECT_NEAR(tiles.y, std::round(tiles.y), 1e-3f) << "frame " << frame;
+}
+
 // A pan of 60 steps of 0.3 texel: the box keeps its size except across a size-ladder step (a
 // few times at most), and otherwise a fixed world point stays on the same texel or moves by
 // whole 8-texel tiles: the map's content and CSSM's tile grid stay put in the world.
@@ -92,19 +104,11 @@ TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
     const glm::vec3 probe(1.0f, 0.0f, -30.0f);
     int resized = 0, moved = 0;
     for (int k = 1; k <= 60; ++k) {
-        scene::Camera camera = s.camera;
-        camera.position += step * static_cast<float>(k);
-        camera.target += step * static_cast<float>(k);
+        const scene::Camera camera = movedBy(s.camera, step * static_cast<float>(k));
         const LightSpace now = computeLightSpace(s.sun, res, s.bounds, camera, 16.0f / 9.0f);
         if (now.viewProj[0] != before.viewProj[0]) ++moved;
-        const glm::vec2 a = texelOf(before, probe), b = texelOf(now, probe);
-        if (std::abs(now.texelScale - before.texelScale) > 1e-6f * before.texelScale) {
-            ++resized;
-        } else {
-            const glm::vec2 tiles = (b - a) / 8.0f;
-            EXPECT_NEAR(tiles.x, std::round(tiles.x), 1e-3f) << "frame " << k;
-            EXPECT_NEAR(tiles.y, std::round(tiles.y), 1e-3f) << "frame " << k;
-        }
+        if (std::abs(now.texelScale - before.texelScale) > 1e-6f * before.texelScale) ++resized;
+        else expectWholeTiles(before, now, probe, k);
         // Still covering what the camera looks at.
         const glm::vec2 target = texelOf(now, camera.target) / static_cast<float>(res);
         EXPECT_TRUE(target.x > 0.0f && target.x < 1.0f && target.y > 0.0f && target.y < 1.0f) << "frame " << k;
@@ -117,9 +121,9 @@ TEST(PlainDirectionalMap, MovesByWholeTilesAsTheCameraPans) {
 
 // Holding the box (computeLightSpace's `previous`, RenderOptions::holdSunBox) under a camera that
 // flies 4 texels a frame along the long scene: the held box moves in a third of the frames a box
-// fitted afresh moves in (every other), or fewer; it always holds the part of the camera's frustum inside the
-// scene; it is at most a size step and the slack coarser; and while its size stays, the map's
-// content moves by whole 8-texel tiles.
+// fitted afresh moves in (every other), or fewer; it always holds the part of the camera's frustum
+// inside the scene; it is at most a size step and the slack coarser; and while its size stays, the
+// map's content moves by whole 8-texel tiles.
 TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
     LongScene s;
     s.camera.far = 60.0f;
@@ -131,9 +135,7 @@ TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
     const glm::vec3 probe(1.0f, 0.0f, -40.0f);
     int heldMoves = 0, fittedMoves = 0;
     for (int k = 1; k <= 100; ++k) {
-        scene::Camera camera = s.camera;
-        camera.position += step * static_cast<float>(k);
-        camera.target += step * static_cast<float>(k);
+        const scene::Camera camera = movedBy(s.camera, step * static_cast<float>(k));
         const LightSpace heldNow = computeLightSpace(s.sun, res, s.bounds, camera, aspect, &held);
         const LightSpace fittedNow = computeLightSpace(s.sun, res, s.bounds, camera, aspect);
         heldMoves += heldNow.viewProj[0] != held.viewProj[0];
@@ -145,11 +147,7 @@ TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
                 << "frame " << k << ": a point the camera sees lies outside the held box (" << uv.x << ", " << uv.y << ")";
         }
         EXPECT_LE(heldNow.texelScale, fittedNow.texelScale * std::exp2(1.0f / 8.0f) * (1.0f + kBoxSlack) * 1.001f) << "frame " << k;
-        if (heldNow.box.z == held.box.z && heldNow.box.w == held.box.w) {
-            const glm::vec2 tiles = (texelOf(heldNow, probe) - texelOf(held, probe)) / 8.0f;
-            EXPECT_NEAR(tiles.x, std::round(tiles.x), 1e-3f) << "frame " << k;
-            EXPECT_NEAR(tiles.y, std::round(tiles.y), 1e-3f) << "frame " << k;
-        }
+        if (heldNow.box.z == held.box.z && heldNow.box.w == held.box.w) expectWholeTiles(held, heldNow, probe, k);
         held = heldNow;
         fitted = fittedNow;
     }
@@ -178,10 +176,8 @@ TEST(Cascades, AHeldCascadeMovesRarelyAndHoldsItsSlice) {
     const float nearTexel = held[0].texelWorld;
     std::array<int, count> heldMoves{}, fittedMoves{};
     for (int k = 1; k <= 100; ++k) {
-        scene::Camera camera = s.camera;
         const glm::vec3 step(0.3f * nearTexel, 0.0f, -2.0f * nearTexel);  // forward and a little sideways
-        camera.position += step * static_cast<float>(k);
-        camera.target += step * static_cast<float>(k);
+        const scene::Camera camera = movedBy(s.camera, step * static_cast<float>(k));
         const std::vector<Cascade> heldNow = fitAll(camera, &held), fittedNow = fitAll(camera, nullptr);
         for (std::size_t c = 0; c < count; ++c) {
             heldMoves[c] += heldNow[c].viewProj != held[c].viewProj;

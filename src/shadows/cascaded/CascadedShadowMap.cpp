@@ -35,9 +35,10 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     const int count = std::clamp(count_, 1, 8);
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     const scene::Camera& cam = *frame.camera;
+    // Boxes held while they hold their slices (fitCascade's `previous`).
+    const bool holdBoxes = frame.holdSunBox && stabilize_ && !freeze_;
     if (!freeze_ || static_cast<int>(fitted_.size()) != count || fittedResolution_ != res) {
-        // Last frame's boxes, held while they hold their slices (fitCascade's `previous`).
-        const std::vector<Cascade> last = frame.holdSunBox && stabilize_ && fittedResolution_ == res ? fitted_ : std::vector<Cascade>{};
+        const std::vector<Cascade> last = holdBoxes && fittedResolution_ == res ? fitted_ : std::vector<Cascade>{};
         fittedResolution_ = res;
         float near = cam.near, far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
         if (sdsm_ && frame.drawSurfaces)
@@ -64,11 +65,10 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
-    // Held boxes (fitCascade's `previous`) leave the slice room to move by kBoxSlack / 2 of the
-    // box each way: the layers are drawn with as much room around their reads.
-    const bool held = frame.holdSunBox && stabilize_ && !freeze_;
+    // Held boxes leave the slice room to move by kBoxSlack / 2 of the box each way: the layers are
+    // drawn with as much room around their reads.
     cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res),
-                     held ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
+                     holdBoxes ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
 }
 
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of

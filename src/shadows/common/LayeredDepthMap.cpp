@@ -53,13 +53,14 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
                          : std::uint64_t{0};
         };
         // Kept while it is unchanged and its reads lie in what was drawn last.
-        const bool unchanged = holds_[l] != 0 && keyOf(drawn_[l]) == holds_[l];
+        const std::uint64_t drawnKey = holds_[l] != 0 ? keyOf(drawn_[l]) : 0;
+        const bool unchanged = drawnKey != 0 && drawnKey == holds_[l];
         if (unchanged && intersection(read, drawn_[l]) == read) continue;
         // With `readRoom`, drawn with that room around the reads, so that a layer whose box is held
         // while the camera moves (fitCascade's `previous`) is kept until its reads leave it.
         const TexelRect draw = cropped ? grown(read, glm::ivec2(readRoom), res) : read;
         const CasterSelection casters = selection(draw);
-        holds_[l] = keyOf(draw);
+        holds_[l] = drawnKey != 0 && draw == drawn_[l] ? drawnKey : keyOf(draw);  // the same rectangle: its key is known
         drawn_[l] = draw;
         if (isEmpty(draw)) continue;  // nothing reads this layer: its stale texels stay unread
         const ScopedScissor scissor(draw, cropped);
