@@ -7,6 +7,7 @@
 #include "gl/Debug.h"
 #include "render/Offscreen.h"
 #include "shadows/LightSpace.h"
+#include "shadows/warped/WarpedShadowMap.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
@@ -302,6 +303,15 @@ struct PanResult {
     float coarsestTexel = 0.0f, finestTexel = 1e9f;
 };
 
+// The sun's texel: the plain box's or the cascades' (LightSpace), or where the camera looks, a
+// warped map's (LiSPSM, PSM).
+float sunTexel(const render::Renderer& renderer, const scene::Scene& s) {
+    if (const auto* warped = dynamic_cast<const shadows::WarpedShadowMap*>(&renderer.technique()))
+        return shadows::warpedTexelWorld(warped->views().at(0).shadowMatrix, s.camera.target, s.lights[0].direction,
+                                         s.lights[0].shadow.resolution);
+    return renderer.lightSpaces().at(0).texelScale;
+}
+
 PanResult panOverTheSquares(const std::string& technique, bool holdSunBox, int frames, float startZ = -5.0f, float step = 0.5f) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [2, 12, -5], "target": [2, 0, -5], "up": [0, 0, -1], "fov_deg": 60, "near": 0.5, "far": 40 },
@@ -332,7 +342,7 @@ PanResult panOverTheSquares(const std::string& technique, bool holdSunBox, int f
         const MaskComparison c = compareMasks(expected, rendered, w, h, 2);
         EXPECT_GT(c.expectedOn, 300) << "frame " << frame;
         EXPECT_EQ(c.mismatchesAwayFromEdges, 0) << "frame " << frame << (holdSunBox ? ", held box" : ", fitted box");
-        const float texel = renderer.lightSpaces().at(0).texelScale;
+        const float texel = sunTexel(renderer, s);
         result.coarsestTexel = std::max(result.coarsestTexel, texel);
         result.finestTexel = std::min(result.finestTexel, texel);
     }
@@ -368,6 +378,24 @@ TEST(HeldCascades, DrawWhatComesIntoView) {
 
 // hard: the plain map's box (LightSpace); cascaded: each cascade's (fitCascade), kept layer by layer.
 INSTANTIATE_TEST_SUITE_P(Techniques, SunBox, ::testing::Values("hard", "cascaded"));
+
+// LiSPSM's and PSM's views (followWarpedView) over the slow pan: a warp follows the view closely,
+// so a pan of 5 texels a frame moves it in most frames either way (15 of 20 held), but one of half
+// a texel, as a walk would, every few. Every frame's shadows lie where the rays say.
+TEST(HeldWarps, AreDrawnAgainEveryFewFramesOfASlowPanAndShadowWhereRaysSay) {
+    for (const char* technique : {"lispsm", "psm"}) {
+        const int frames = 31;
+        const PanResult fitted = panOverTheSquares(technique, false, frames, -0.5f, 0.05f);
+        const PanResult held = panOverTheSquares(technique, true, frames, -0.5f, 0.05f);
+        std::printf("%s, 30 frames of 0.05 m: maps drawn in %d (fitted), %d (held); texel where the camera looks %.4f-%.4f "
+                    "against %.4f-%.4f m\n", technique, fitted.mapsDrawn, held.mapsDrawn, held.finestTexel, held.coarsestTexel,
+                    fitted.finestTexel, fitted.coarsestTexel);
+        EXPECT_EQ(fitted.mapsDrawn, frames - 1) << technique << ": fitted, the view moves in every frame";
+        EXPECT_LE(held.mapsDrawn * 3, fitted.mapsDrawn) << technique;
+        EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * shadows::kHeldWarpCoarser * 1.001f) << technique;
+    }
+    EXPECT_EQ(gl::debugErrorCount(), 0);
+}
 
 }  // namespace
 }  // namespace penumbra::test

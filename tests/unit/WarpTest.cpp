@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
@@ -144,6 +145,51 @@ TEST(Warp, EveryVisiblePointFallsInsideTheMapOverASweep) {
                 }
             }
     EXPECT_EQ(cases, 12 * 4 * 4 * 2);
+}
+
+// A camera walking 5 m down the road in 100 frames (3 m/s at 60 frames a second), swaying ±6°:
+// held views (followWarpedView) move in a fifth of the frames, yet in every frame every point of
+// the body and of its extrusion towards the light lies in the view's clip volume, in front of its
+// clip plane, and its texels on the body are at most kHeldWarpCoarser those of the frame's own
+// fit. Walking faster moves them more often: near the camera a warp's texels grow with the
+// distance walked (0.15 m a frame: about every other frame).
+TEST(Warp, AHeldViewMovesRarelyAndHoldsTheBody) {
+    for (int warp = 0; warp < 2; ++warp) {
+        Road r;
+        std::optional<WarpedView> last;
+        int moves = 0;
+        float worstRatio = 0.0f;
+        for (int frame = 0; frame < 100; ++frame) {
+            const float sway = glm::radians(6.0f) * std::sin(0.15f * static_cast<float>(frame));
+            r.camera.position = {0.0f, 1.7f, -0.05f * static_cast<float>(frame)};
+            r.camera.target = r.camera.position + glm::vec3(std::sin(sway), -0.02f, -std::cos(sway));
+            const WarpedView fitted = warp == 0 ? fitLispsm(r.sun, r.camera, r.viewProj(), r.bounds)
+                                                : fitPsm(r.sun, r.camera, r.viewProj(), r.bounds);
+            WarpBody body;
+            ASSERT_TRUE(fitted.valid && makeWarpBody(r.sun, r.viewProj(), r.bounds, body));
+            const WarpedView v = followWarpedView(fitted, last ? &*last : nullptr, body, r.sun.direction);
+            if (!last) {
+                EXPECT_EQ(v.viewProj, fitted.viewProj) << "the first frame: the fit itself";
+            }
+            moves += last && v.viewProj != last->viewProj;
+            for (const glm::vec3& p : body.casters) {
+                const glm::vec4 c = v.viewProj * glm::vec4(p, 1.0f);
+                ASSERT_GT(c.w, 0.0f) << "frame " << frame;
+                for (int k = 0; k < 3; ++k) {
+                    ASSERT_LE(std::abs(c[k]), c.w * 1.00001f) << (warp ? "psm" : "lispsm") << ", frame " << frame;
+                }
+                ASSERT_GE(glm::dot(v.clipPlane, glm::vec4(p, 1.0f)), 0.0f) << "frame " << frame;
+            }
+            for (const glm::vec3& p : body.visible)
+                worstRatio = std::max(worstRatio, warpedTexelWorld(v.shadowMatrix, p, r.sun.direction, 1) /
+                                                      warpedTexelWorld(fitted.shadowMatrix, p, r.sun.direction, 1));
+            last = v;
+        }
+        std::printf("%s, 99 frames of a walk: the held view moved in %d; texels at most %.3fx the fit's\n", warp ? "psm" : "lispsm", moves,
+                    worstRatio);
+        EXPECT_LE(moves, 33) << "held, the view moves in a third of the frames or fewer";
+        EXPECT_LE(worstRatio, kHeldWarpCoarser * 1.0001f);
+    }
 }
 
 }  // namespace

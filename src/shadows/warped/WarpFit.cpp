@@ -39,13 +39,16 @@ glm::mat4 orthoAround(const scene::Bounds& b) {
                       -b.max.z - margin.z, -b.min.z + margin.z);
 }
 
-// Shared start of both fits: the body, its extrusion and the view axis.
-struct Body {
-    std::vector<glm::vec3> visible, casters;  // B, and B extruded to the scene's edge towards the light
-    glm::vec3 axis;
-};
+WarpedView finish(WarpedView w, const glm::mat4& viewProj) {
+    w.viewProj = viewProj;
+    w.shadowMatrix = kClipToTexture * viewProj;
+    w.valid = true;
+    return w;
+}
 
-bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, Body& body) {
+}  // namespace
+
+bool makeWarpBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, WarpBody& body) {
     if (scene.objects.empty()) body.visible = frustumInsideBox(cameraViewProj, scene.bounds);
     // Flat objects (a ground plane) have boxes of zero thickness, which clipping would whittle
     // down to nothing in rounding: every box gets a margin of a thousandth of the scene.
@@ -62,14 +65,25 @@ bool makeBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const Wa
     return true;
 }
 
-WarpedView finish(WarpedView w, const glm::mat4& viewProj) {
-    w.viewProj = viewProj;
-    w.shadowMatrix = kClipToTexture * viewProj;
-    w.valid = true;
-    return w;
+WarpedView withRoom(WarpedView view, float room) {
+    const float s = 1.0f / (1.0f + room);
+    return finish(view, glm::scale(glm::mat4(1.0f), glm::vec3(s)) * view.viewProj);
 }
 
-}  // namespace
+bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const WarpBody& body, const glm::vec3& lightDirection,
+                     float coarser) {
+    if (!held.valid || !fitted.valid) return false;
+    for (const glm::vec3& p : body.casters) {  // the visible points come first in it
+        const glm::vec4 c = held.viewProj * glm::vec4(p, 1.0f);
+        if (c.w <= 0.0f || glm::any(glm::greaterThan(glm::abs(glm::vec3(c)), glm::vec3(c.w)))) return false;
+        if (glm::dot(held.clipPlane, glm::vec4(p, 1.0f)) < 0.0f) return false;
+    }
+    // The resolution cancels out of the ratio.
+    for (const glm::vec3& p : body.visible)
+        if (warpedTexelWorld(held.shadowMatrix, p, lightDirection, 1) > coarser * warpedTexelWorld(fitted.shadowMatrix, p, lightDirection, 1))
+            return false;
+    return true;
+}
 
 std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,
                                           const scene::Bounds& box) {
@@ -96,8 +110,8 @@ glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, in
 WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                      const WarpScene& scene, const LispsmOptions& options) {
     WarpedView w;
-    Body body;
-    if (!makeBody(sun, cameraViewProj, scene, body)) return w;
+    WarpBody body;
+    if (!makeWarpBody(sun, cameraViewProj, scene, body)) return w;
     const glm::vec3 d = glm::normalize(sun.direction);
     const float cosGamma = glm::dot(body.axis, d);
     w.sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
@@ -140,8 +154,8 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                   const WarpScene& scene, float minNear) {
     WarpedView w;
-    Body body;
-    if (!makeBody(sun, cameraViewProj, scene, body)) return w;
+    WarpBody body;
+    if (!makeWarpBody(sun, cameraViewProj, scene, body)) return w;
     const glm::vec3 v = body.axis;
     auto depthOf = [&](const glm::vec3& p) { return glm::dot(p - camera.position, v); };
     float visibleNear = std::numeric_limits<float>::max(), visibleFar = 0.0f, casterNear = visibleNear, casterFar = 0.0f;
@@ -211,6 +225,13 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const gl
     const float zFront = w.inverted ? farL : nearL, zBack = w.inverted ? nearL : farL;
     const glm::mat4 proj = glm::frustum(lo.x * zFront, hi.x * zFront, lo.y * zFront, hi.y * zFront, zFront, zBack);
     return finish(w, proj * view * pp);
+}
+
+const float kHeldWarpCoarser = std::exp2(1.0f / 8.0f) * (1.0f + kBoxSlack);
+
+WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection) {
+    if (!last || !fitted.valid) return fitted;
+    return warpedViewHolds(*last, fitted, body, lightDirection, kHeldWarpCoarser) ? *last : withRoom(fitted, kBoxSlack);
 }
 
 float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& lightDirection, int resolution) {

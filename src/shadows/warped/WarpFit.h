@@ -41,6 +41,15 @@ struct WarpedView {
     bool valid = false;     // false: the body is empty (the camera sees nothing of the scene)
 };
 
+// What a warped view is fitted to: B, the part of the (sub-)frustum where the scene is, and B
+// extruded towards the light to the scene's edge (every caster that can shadow B lies in it).
+struct WarpBody {
+    std::vector<glm::vec3> visible, casters;
+    glm::vec3 axis{0.0f, 0.0f, -1.0f};  // the frustum's axis
+};
+// False when the frustum sees nothing of the scene.
+bool makeWarpBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, WarpBody& body);
+
 // `points` and, for each, where the ray towards the light leaves `box` (the casters' reach).
 std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,
                                           const scene::Bounds& box);
@@ -63,6 +72,23 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
 // the body's depth: the slide-back that keeps every caster in front of the virtual camera.
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                   const WarpScene& scene, float minNear = 0.02f);
+
+// Held views, as the plain sun's box (LightSpace.h, kBoxSlack) and the cascades hold theirs, so
+// that a moving camera has the warped maps drawn every few frames instead of every frame:
+// `view` with `room` to spare around its body, its clip-space image shrunk by 1 + room about its
+// centre (across the map and in depth).
+WarpedView withRoom(WarpedView view, float room);
+// Whether `held` (last frame's view) still serves this frame's `body`: every point of the body and
+// of its extrusion lies in its clip volume and in front of its clip plane, and nowhere on B are its
+// texels more than `coarser` times those of `fitted`, this frame's own fit.
+bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const WarpBody& body, const glm::vec3& lightDirection,
+                     float coarser);
+// This frame's view, from its own fit to `body` and last frame's view (null: none, e.g. the first
+// frame): last frame's while it holds with its texels at most a ladder step (2^(1/8), as the plain
+// box's) and kBoxSlack coarser than the fit's (kHeldWarpCoarser); else the fit with kBoxSlack of
+// room; without last frame's, the fit itself, so a single frame is as it was.
+WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection);
+extern const float kHeldWarpCoarser;
 
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
 // perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.

@@ -2,6 +2,7 @@
 
 #include "gl/Debug.h"
 #include "gpu/ShaderContract.h"
+#include "util/Digest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,34 +35,9 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     light_ = frame.slots->sun;
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
-    const scene::Camera& cam = *frame.camera;
     const glm::ivec2 grid = requestedGrid();
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
-    if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) {
-        grid_ = grid;
-        // Tiles reach only as far as the scene does: a 1 km far plane must not thin the warp.
-        const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
-                                                0.5f * glm::length(frame.sceneBounds.extent()));
-        const float reach = std::max(far, cam.near * 2.0f);
-        WarpScene where(frame.sceneBounds);
-        if (frame.scene)
-            for (const auto& obj : frame.scene->objects)
-                where.objects.push_back(frame.scene->meshes[static_cast<std::size_t>(obj.mesh)].bounds.transformed(obj.transformAt(frame.time)));
-        views_.clear();
-        for (int r = 0; r < grid.y; ++r)
-            for (int c = 0; c < grid.x; ++c) {
-                const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
-                WarpedView v = warp_ == Warp::Lispsm
-                                   ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_})
-                                   : fitPsm(sun, cam, tile, where, psmMinNear_);
-                if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
-                    v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
-                    v.shadowMatrix = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].shadowMatrix;
-                }
-                views_.push_back(v);
-            }
-        cameraViewProj_ = cam.projection(frame.aspect) * cam.view();
-    }
+    if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) fitViews(frame, sun, grid);
     resolution_ = res;
     gl::DebugGroup group(name_.c_str());
     std::vector<glm::mat4> viewProj;
@@ -71,6 +47,44 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
         planes.push_back(v.clipPlane);
     }
     warped_.render(frame, sun, res, viewProj, planes);
+}
+
+// Each tile's view fitted to this frame's camera, or last frame's held while it still serves
+// (ShadowFrame::holdSunBox; followWarpedView). The first frame, and any after a change of the
+// light, the resolution, the grid or a parameter, gets the tight fit, as a single frame does.
+void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun, glm::ivec2 grid) {
+    const scene::Camera& cam = *frame.camera;
+    const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
+    // Tiles reach only as far as the scene does: a 1 km far plane must not thin the warp.
+    const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
+                                            0.5f * glm::length(frame.sceneBounds.extent()));
+    const float reach = std::max(far, cam.near * 2.0f);
+    WarpScene where(frame.sceneBounds);
+    if (frame.scene)
+        for (const auto& obj : frame.scene->objects)
+            where.objects.push_back(frame.scene->meshes[static_cast<std::size_t>(obj.mesh)].bounds.transformed(obj.transformAt(frame.time)));
+    const std::uint64_t fitKey = util::Digest()
+                                     .add(sun.direction, res, grid, nScale_, minSinGamma_, nearFromCamera_, psmMinNear_)
+                                     .value();
+    const bool hold = frame.holdSunBox && fitKey == fitKey_ && static_cast<int>(views_.size()) == grid.x * grid.y;
+    fitKey_ = fitKey;
+    grid_ = grid;
+    std::vector<WarpedView> views;
+    for (int r = 0; r < grid.y; ++r)
+        for (int c = 0; c < grid.x; ++c) {
+            const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
+            WarpedView v = warp_ == Warp::Lispsm ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_})
+                                                 : fitPsm(sun, cam, tile, where, psmMinNear_);
+            if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
+                v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
+                v.shadowMatrix = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].shadowMatrix;
+            } else if (WarpBody body; hold && makeWarpBody(sun, tile, where, body)) {
+                v = followWarpedView(v, &views_[views.size()], body, sun.direction);
+            }
+            views.push_back(v);
+        }
+    views_ = std::move(views);
+    cameraViewProj_ = cam.projection(frame.aspect) * cam.view();
 }
 
 glm::ivec2 WarpedShadowMap::requestedGrid() const { return {std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4)}; }

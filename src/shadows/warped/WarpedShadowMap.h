@@ -33,6 +33,7 @@ protected:
 
 private:
     glm::ivec2 requestedGrid() const;
+    void fitViews(const ShadowFrame& frame, const scene::Light& sun, glm::ivec2 grid);
 
     std::string name_;
     Warp warp_;
@@ -42,7 +43,8 @@ private:
     int light_ = -1, resolution_ = 0;
     glm::ivec2 grid_{1, 1};
     glm::mat4 cameraViewProj_{1.0f};
-    std::vector<WarpedView> views_;
+    std::vector<WarpedView> views_;  // this frame's, one per tile (last frame's while fitViews runs)
+    std::uint64_t fitKey_ = 0;       // what views_ were fitted under: light, resolution, grid, parameters
     LayeredDepthMap warped_;
     DepthAndTintMaps maps_;
 };
