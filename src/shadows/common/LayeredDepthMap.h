@@ -8,9 +8,13 @@
 // their current placement) are as in the last frame, and whose texels read lie in those last
 // drawn, is kept (ShadowFrame::reuseStillCasters): kept while the camera and what the layer sees
 // stand still, or while the camera moves within a held cascade box (fitCascade's `previous`).
+// A layer that animated casters reach keeps its still casters' depth in a second array, as the
+// plain maps do (DepthAndTintMaps::renderOpaque): each frame the still depth is copied back where
+// the animated casters were and are, and they are drawn there, instead of the whole layer.
 #include "gl/Framebuffer.h"
 #include "gl/Program.h"
 #include "gl/Texture.h"
+#include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
 #include "shadows/common/MapRegion.h"
 
@@ -37,17 +41,35 @@ public:
     void bind(unsigned unit) const { texture_.bind(unit); }
     bool empty() const { return texture_.id() == 0; }
     int layers() const { return layers_; }
-    std::size_t memoryBytes() const { return texture_.memoryBytes(); }
+    std::size_t memoryBytes() const { return texture_.memoryBytes() + still_.memoryBytes(); }
     DebugView debugView(const std::string& label) const;  // layer 0
 
 private:
+    // Per layer: the caster selection for texels `rect`, and the digest of what it would draw.
+    struct LayerPass;
+    void renderPlain(const LayerPass& pass, const TexelRect& read, const TexelRect& moving);
+    void renderOverStill(const LayerPass& pass, const TexelRect& read, const TexelRect& moving);
+    void restoreStill(std::size_t layer, const TexelRect& rect);
+    void drawInto(const gl::Framebuffer& target, const LayerPass& pass, const TexelRect& rect, Motion motion, bool clear);
+
     gl::Texture texture_;
     gl::Texture view_;  // layer 0 as a plain 2D texture for the debug overlay
     std::vector<gl::Framebuffer> layerTargets_;  // one depth-only framebuffer per layer
     std::vector<std::uint64_t> holds_;           // per layer: the digest of what it holds (0: unknown)
     std::vector<TexelRect> drawn_;               // per layer: the texels last drawn (the rest is stale)
-    int resolution_ = 0, layers_ = 0;
+    // Layers that animated casters reach: the still casters' depth, what it holds, and where the
+    // animated casters were drawn over its copy (empty: the layer is the still depth there too).
+    gl::Texture still_;
+    std::vector<gl::Framebuffer> stillTargets_;
+    std::vector<std::uint64_t> stillHolds_;   // per layer: the digest of what the still array holds
+    std::vector<TexelRect> stillDrawn_;       // per layer: the texels of the still array last drawn
+    std::vector<std::uint64_t> overStill_;    // per layer: the still casters' digest its texels hold but where movingDrawn_ (0: unknown)
+    std::vector<TexelRect> movingDrawn_;
+    std::vector<std::uint64_t> viewKeys_;     // per layer: last frame's view (matrix and clip plane)
+    int resolution_ = 0, layers_ = 0, readRoom_ = 0;
     DepthCasterProgram casters_;
+    gl::Program restore_;  // depth_restore.frag, made when first needed
+    gl::VertexArray fullscreenVao_;
 };
 
 }  // namespace penumbra::shadows
