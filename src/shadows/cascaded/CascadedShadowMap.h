@@ -18,6 +18,11 @@ public:
     void renderMaps(const ShadowFrame& frame) override;
     // The sun's cascades are maps of their own, their texels not bounded by the light's map.
     float tintReachTexels() const override { return -1.0f; }
+    // The texel a cascade's comparison reads and the normal offset, in the coarsest cascade's
+    // texels, counted in the sun's plain-map texels (renderMaps, reachTexels_); one texel compare
+    // at the receiver's own depth. Other lights' hard lookups reach less.
+    float shadowReachTexels() const override { return reachTexels_; }
+    float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
     // the other way too, a matrix product per cascade tried).
     std::vector<std::string> lookupDefines() const override { return {"CASCADE_SELECT " + std::to_string(select_)}; }
@@ -28,6 +33,7 @@ public:
     const std::vector<Cascade>& cascades() const { return fitted_; }
     // Per cascade: the texels a lookup can read (fit_receivers), or none given (whole layers).
     std::vector<TexelRect> readTexels(const ShadowFrame& frame, const scene::Light& sun, int resolution) const;
+    float reachInPlainTexels(const scene::Light& sun, float plainTexel) const;
 
 protected:
     std::vector<Parameter> declareParameters() override;
@@ -37,6 +43,7 @@ private:
     float lambda_ = 0.75f, blend_ = 0.1f, maxDistance_ = 0;
     bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true, fitReceivers_ = true;
     int light_ = -1, fittedResolution_ = 0;
+    float reachTexels_ = -1.0f;  // shadowReachTexels: negative until the cascades are fitted
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;
     std::vector<Cascade> fitted_;
