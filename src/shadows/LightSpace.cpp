@@ -84,6 +84,12 @@ constexpr float kSnapTexels = 8.0f;
 constexpr float kSizeSteps = 8.0f;  // ladder steps per doubling
 const float kBoxSlack = 1.0f / 16.0f;
 
+float reachInPlainTexels(float coarsestTexel, float plainTexel, float normalOffset) {
+    if (!(plainTexel > 0.0f)) return -1.0f;
+    const float ratio = std::max(coarsestTexel / plainTexel, 1.0f), offset = std::max(normalOffset, 0.0f);
+    return std::exp2(std::ceil(std::log2(std::max(ratio * (offset + 3.0f) - offset - 2.0f, 2.0f))));
+}
+
 namespace {
 
 float snapStep(float size, int res) { return size / static_cast<float>(res) * kSnapTexels; }

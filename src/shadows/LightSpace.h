@@ -44,6 +44,14 @@ LightSpace computeLightSpace(const scene::Light& light, int resolution, const sc
 // The room a moved directional box leaves around the view, as a share of the view's extent per axis.
 extern const float kBoxSlack;
 
+// ShadowTechnique::shadowReachTexels of a lookup that compares one texel of a map of its own
+// (cascades, warped views) at the receiver's own depth: the renderer pads each caster's shadow by
+// that + the normal offset + 2 texels of the light's plain map (`plainTexel`, LightSpace::texelScale;
+// Renderer::addShadowReach), and the lookup needs the texel it reads, the normal offset and the
+// same 2 of rounding in its own map's coarsest texel (at least the plain map's). Rounded up to a
+// power of two, so that the renderer's memo of footprints keeps its keys while those maps move.
+float reachInPlainTexels(float coarsestTexel, float plainTexel, float normalOffset);
+
 // Maps clip space [-1,1]^3 to texture space [0,1]^3.
 extern const glm::mat4 kClipToTexture;
 

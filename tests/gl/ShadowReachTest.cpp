@@ -121,7 +121,7 @@ TEST(ShadowReach, KeepsTheLookupWhereReceiverPlaneTapsReachACasterBehind) {
 
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReach,
                          ::testing::Values("hard", "pcf-poisson16:radius_texels=6", "pcf-grid:radius_texels=4", "pcss:sun_angle_deg=12", "cssm2", "cssm1",
-                                           "distance:spacing_texels=4", "cascaded", "cascaded:cascades=2"),
+                                           "distance:spacing_texels=4", "cascaded", "cascaded:cascades=2", "lispsm", "lispsm-tiled", "psm"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return testNameOf(info.param); });
 
 }  // namespace

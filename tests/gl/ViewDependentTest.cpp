@@ -75,6 +75,39 @@ TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
     std::printf("sweep of %d technique/camera/sun cases: at most %d pixels away from shadow edges differ\n", cases, worst);
 }
 
+// The view-dependent maps pad the shadows whose lookup they leave out by their coarsest texel on
+// the camera's body (shadowReachTexels): over the sweep, every shaded pixel is as with every
+// lookup made (`--shadow-everywhere`), while pixels are shaded without the lookup in some cases.
+TEST(ViewDependent, LookupsLeftOutChangeNoPixelOverTheSweep) {
+    scene::Scene s = sweepScene();
+    int cases = 0, split = 0;
+    for (int sunAz : {0, 90, 180, 270})
+        for (float sunEl : {25.0f, 70.0f})
+            for (float pitch : {-12.0f, -50.0f, -88.0f}) {
+                const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
+                s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+                s.camera.target = glm::vec3(0.0f, 0.5f, -10.0f);
+                s.camera.position = s.camera.target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
+                for (const char* technique : {"lispsm", "psm", "lispsm-tiled", "cascaded"}) {
+                    std::vector<float> pictures[2];
+                    for (int everywhere = 0; everywhere < 2; ++everywhere) {
+                        render::RenderOptions options = optionsFor(technique);
+                        options.shadowOnlyWhereCast = everywhere == 0;
+                        render::Renderer renderer(s, options);
+                        render::OffscreenTarget target(160, 96);
+                        renderer.render(0.0f, s.camera, 160, 96, target.framebuffer());
+                        pictures[everywhere] = renderer.readLinear();
+                        if (everywhere == 0) split += renderer.tintShading().unshadowedPieces > 0;
+                    }
+                    EXPECT_EQ(differingPixels(pictures[0], pictures[1]), 0u)
+                        << technique << " sun az " << sunAz << " el " << sunEl << " pitch " << pitch;
+                    ++cases;
+                }
+            }
+    std::printf("%d cases, %d of them shaded in part without the sun's lookup\n", cases, split);
+    EXPECT_GT(split, cases / 4);
+}
+
 // Cascades chosen either way (CASCADE_SELECT, compiled into the lookup: by view depth, or by the
 // first cascade box that holds the point) lose no shadow and invent none over the sweep's pitches,
 // with the sun low behind the viewer and high beside it.

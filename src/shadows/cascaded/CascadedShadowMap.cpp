@@ -63,7 +63,10 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
         }
         cameraView_ = cam.view();
     }
-    reachTexels_ = reachInPlainTexels(sun, (*frame.lightSpaces)[static_cast<std::size_t>(light_)].texelScale);
+    const float plainTexel = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].texelScale;
+    float coarsest = plainTexel;
+    for (const Cascade& c : fitted_) coarsest = std::max(coarsest, c.texelWorld);
+    reachTexels_ = reachInPlainTexels(coarsest, plainTexel, sun.shadow.normalOffset);
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
@@ -71,20 +74,6 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     // drawn with as much room around their reads.
     cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res),
                      holdBoxes ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
-}
-
-// The renderer pads each caster's shadow by shadowReachTexels + the normal offset + 2 texels of the
-// light's plain map (Renderer::addShadowReach); a cascade's lookup needs the texel it reads, the
-// normal offset and the same 2 of rounding, in its own texels: of the coarsest cascade, at least the
-// plain map's. Rounded up to a power of two, so that the renderer's memo of footprints keeps its
-// keys while held cascades move (kBoxSlack).
-float CascadedShadowMap::reachInPlainTexels(const scene::Light& sun, float plainTexel) const {
-    float coarsest = plainTexel;
-    for (const Cascade& c : fitted_) coarsest = std::max(coarsest, c.texelWorld);
-    if (!(plainTexel > 0.0f) || fitted_.empty()) return -1.0f;
-    const float normalOffset = std::max(sun.shadow.normalOffset, 0.0f);
-    const float reach = coarsest / plainTexel * (normalOffset + 3.0f) - normalOffset - 2.0f;
-    return std::exp2(std::ceil(std::log2(std::max(reach, 2.0f))));
 }
 
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of

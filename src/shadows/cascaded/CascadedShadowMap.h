@@ -18,9 +18,8 @@ public:
     void renderMaps(const ShadowFrame& frame) override;
     // The sun's cascades are maps of their own, their texels not bounded by the light's map.
     float tintReachTexels() const override { return -1.0f; }
-    // The texel a cascade's comparison reads and the normal offset, in the coarsest cascade's
-    // texels, counted in the sun's plain-map texels (renderMaps, reachTexels_); one texel compare
-    // at the receiver's own depth. Other lights' hard lookups reach less.
+    // One texel compared at the receiver's own depth, in the coarsest cascade's texels
+    // (reachInPlainTexels, set by renderMaps). Other lights' hard lookups reach less.
     float shadowReachTexels() const override { return reachTexels_; }
     float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
@@ -33,7 +32,6 @@ public:
     const std::vector<Cascade>& cascades() const { return fitted_; }
     // Per cascade: the texels a lookup can read (fit_receivers), or none given (whole layers).
     std::vector<TexelRect> readTexels(const ShadowFrame& frame, const scene::Light& sun, int resolution) const;
-    float reachInPlainTexels(const scene::Light& sun, float plainTexel) const;
 
 protected:
     std::vector<Parameter> declareParameters() override;

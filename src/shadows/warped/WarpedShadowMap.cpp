@@ -2,12 +2,17 @@
 
 #include "gl/Debug.h"
 #include "gpu/ShaderContract.h"
+#include "shadows/LightSpace.h"
 #include "util/Digest.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace penumbra::shadows {
+
+namespace {
+constexpr float kReachMargin = 1.5f;
+}  // namespace
 
 WarpedShadowMap::WarpedShadowMap(std::string name, Warp warp, int cols, int rows)
     : name_(std::move(name)), warp_(warp), cols_(cols), rows_(rows) {}
@@ -33,6 +38,7 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame, frame.camera ? frame.slots->sun : -1);
     const auto& lights = *frame.lights;
     light_ = frame.slots->sun;
+    reachTexels_ = -1.0f;
     if (light_ < 0 || !frame.camera) return;
     const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
     const glm::ivec2 grid = requestedGrid();
@@ -69,21 +75,31 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
     const bool hold = frame.holdSunBox && fitKey == fitKey_ && static_cast<int>(views_.size()) == grid.x * grid.y;
     fitKey_ = fitKey;
     grid_ = grid;
+    const LightSpace& plain = (*frame.lightSpaces)[static_cast<std::size_t>(light_)];
+    float coarsest = plain.texelScale;  // of the maps on the bodies their pixels lie in
     std::vector<WarpedView> views;
     for (int r = 0; r < grid.y; ++r)
         for (int c = 0; c < grid.x; ++c) {
             const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
             WarpedView v = warp_ == Warp::Lispsm ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_})
                                                  : fitPsm(sun, cam, tile, where, psmMinNear_);
+            WarpBody body;
+            const bool seen = v.valid && makeWarpBody(sun, tile, where, body);
             if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
-                v.viewProj = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].viewProj[0];
-                v.shadowMatrix = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].shadowMatrix;
-            } else if (WarpBody body; hold && makeWarpBody(sun, tile, where, body)) {
+                v.viewProj = plain.viewProj[0];
+                v.shadowMatrix = plain.shadowMatrix;
+            } else if (hold && seen) {
                 v = followWarpedView(v, &views_[views.size()], body, sun.direction);
             }
+            // Over the body's corners; a margin for texels that grow faster than linearly between
+            // them (PSM's double projection).
+            if (seen)
+                for (const glm::vec3& p : body.visible)
+                    coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, res));
             views.push_back(v);
         }
     views_ = std::move(views);
+    reachTexels_ = reachInPlainTexels(coarsest, plain.texelScale, sun.shadow.normalOffset);
     cameraViewProj_ = cam.projection(frame.aspect) * cam.view();
 }
 

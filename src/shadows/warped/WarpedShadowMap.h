@@ -19,6 +19,10 @@ public:
     void renderMaps(const ShadowFrame& frame) override;
     // The sun's warped maps are maps of their own, their texels not bounded by the light's map.
     float tintReachTexels() const override { return -1.0f; }
+    // One texel compared at the receiver's own depth, in the coarsest texel of the warped maps on
+    // the camera's body (reachInPlainTexels, set by fitViews; none while frozen).
+    float shadowReachTexels() const override { return reachTexels_; }
+    float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
     // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
     // search and its dynamically indexed matrix.
@@ -45,6 +49,7 @@ private:
     glm::mat4 cameraViewProj_{1.0f};
     std::vector<WarpedView> views_;  // this frame's, one per tile (last frame's while fitViews runs)
     std::uint64_t fitKey_ = 0;       // what views_ were fitted under: light, resolution, grid, parameters
+    float reachTexels_ = -1.0f;      // shadowReachTexels
     LayeredDepthMap warped_;
     DepthAndTintMaps maps_;
 };
