@@ -27,13 +27,18 @@ scene::Scene sweepScene() {
 }
 
 // One case of the sweep: the sun at azimuth `sunAz` and elevation `sunEl` (degrees), the camera
-// 14 m from the scene's middle, pitched by `pitch`; the reference traced for it at 160 x 96.
-reference::Comparison sweepCase(scene::Scene& s, int sunAz, float sunEl, float pitch) {
+// 14 m from the scene's middle, pitched by `pitch`.
+void aimSweep(scene::Scene& s, int sunAz, float sunEl, float pitch) {
     const glm::vec3 target(0.0f, 0.5f, -10.0f);
     const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
     s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
     s.camera.target = target;
     s.camera.position = target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
+}
+
+// The case, and the reference traced for it at 160 x 96.
+reference::Comparison sweepCase(scene::Scene& s, int sunAz, float sunEl, float pitch) {
+    aimSweep(s, sunAz, sunEl, pitch);
     reference::Comparison cmp(s, 160, 96, 0.0f);
     cmp.traceReference(1, false);
     return cmp;
@@ -84,10 +89,7 @@ TEST(ViewDependent, LookupsLeftOutChangeNoPixelOverTheSweep) {
     for (int sunAz : {0, 90, 180, 270})
         for (float sunEl : {25.0f, 70.0f})
             for (float pitch : {-12.0f, -50.0f, -88.0f}) {
-                const float az = glm::radians(static_cast<float>(sunAz)), el = glm::radians(sunEl), p = glm::radians(pitch);
-                s.lights[0].direction = -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-                s.camera.target = glm::vec3(0.0f, 0.5f, -10.0f);
-                s.camera.position = s.camera.target - 14.0f * glm::vec3(0.02f, std::sin(p), -std::cos(p));
+                aimSweep(s, sunAz, sunEl, pitch);
                 for (const char* technique : {"lispsm", "psm", "lispsm-tiled", "cascaded"}) {
                     std::vector<float> pictures[2];
                     for (int everywhere = 0; everywhere < 2; ++everywhere) {

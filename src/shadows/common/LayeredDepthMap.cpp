@@ -37,6 +37,19 @@ struct LayeredDepthMap::LayerPass {
 
 namespace {
 bool holds(const TexelRect& outer, const TexelRect& inner) { return intersection(inner, outer) == inner; }
+
+// A depth-only framebuffer on each layer of `array`.
+std::vector<gl::Framebuffer> depthTargets(const gl::Texture& array, int layers, const std::string& what) {
+    std::vector<gl::Framebuffer> targets;
+    for (int layer = 0; layer < layers; ++layer) {
+        gl::Framebuffer target;
+        target.attachLayer(GL_DEPTH_ATTACHMENT, array, layer);
+        target.setNoColor();
+        target.checkComplete(what + ", layer " + std::to_string(layer));
+        targets.push_back(std::move(target));
+    }
+    return targets;
+}
 }  // namespace
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
@@ -48,14 +61,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         texture_.setFilter(GL_NEAREST, GL_NEAREST);
         texture_.setDepthCompare(true);
         view_ = gl::Texture::view2D(texture_, GL_DEPTH_COMPONENT32F, 0);
-        layerTargets_.clear();
-        for (int layer = 0; layer < count; ++layer) {
-            gl::Framebuffer target;
-            target.attachLayer(GL_DEPTH_ATTACHMENT, texture_, layer);
-            target.setNoColor();
-            target.checkComplete("layered shadow map, layer " + std::to_string(layer));
-            layerTargets_.push_back(std::move(target));
-        }
+        layerTargets_ = depthTargets(texture_, count, "layered shadow map");
         resolution_ = res;
         layers_ = count;
         holds_.assign(static_cast<std::size_t>(count), 0);
@@ -118,13 +124,7 @@ void LayeredDepthMap::renderOverStill(const LayerPass& pass, const TexelRect& re
     if (still_.id() == 0) {
         still_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, resolution_, resolution_, layers_);
         still_.setFilter(GL_NEAREST, GL_NEAREST);  // one level: complete for texelFetch
-        for (int layer = 0; layer < layers_; ++layer) {
-            gl::Framebuffer target;
-            target.attachLayer(GL_DEPTH_ATTACHMENT, still_, layer);
-            target.setNoColor();
-            target.checkComplete("layered shadow map's still casters, layer " + std::to_string(layer));
-            stillTargets_.push_back(std::move(target));
-        }
+        stillTargets_ = depthTargets(still_, layers_, "layered shadow map's still casters");
     }
     const std::uint64_t stillKey = stillHolds_[l] != 0 ? pass.keyOf(stillDrawn_[l], Motion::Still) : 0;
     const bool stillKept = stillKey != 0 && stillKey == stillHolds_[l] && holds(stillDrawn_[l], read);
