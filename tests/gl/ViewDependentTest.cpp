@@ -58,25 +58,31 @@ MaskComparison compareShadowMasks(const reference::Comparison& cmp, const refere
     return compareMasks(expected, rendered, cmp.width(), cmp.height(), 1);
 }
 
+// Calls each(sunAz, sunEl, pitch) for the sweep's 24 cases: the sun in front of, behind and beside
+// the viewer, low and high; the camera level to looking straight down.
+template <typename Each>
+void forEachSweepCase(Each&& each) {
+    for (int sunAz : {0, 90, 180, 270})
+        for (float sunEl : {25.0f, 70.0f})
+            for (float pitch : {-12.0f, -50.0f, -88.0f}) each(sunAz, sunEl, pitch);
+}
+
 TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
     scene::Scene s = sweepScene();
     int worst = 0, cases = 0;
-    for (int sunAz : {0, 90, 180, 270})
-        for (float sunEl : {25.0f, 70.0f})
-            for (float pitch : {-12.0f, -50.0f, -88.0f}) {
-                reference::Comparison cmp = sweepCase(s, sunAz, sunEl, pitch);
-                for (const char* technique : {"lispsm", "psm", "lispsm-tiled"}) {
-                    const MaskComparison m = compareShadowMasks(cmp, cmp.evaluate(technique, 1024, 0));
-                    // A lost shadow is a region; a dozen scattered pixels (0.08%) are sub-pixel
-                    // slivers of distant posts that no 1024^2 map resolves.
-                    EXPECT_LE(m.mismatchesAwayFromEdges, 12)
-                        << technique << " sun az " << sunAz << " el " << sunEl << " pitch " << pitch << ": "
-                        << m.mismatchesAwayFromEdges << " pixels away from edges differ (" << m.mismatches << " in all, "
-                        << m.expectedOn << " shadowed)";
-                    worst = std::max(worst, m.mismatchesAwayFromEdges);
-                    ++cases;
-                }
-            }
+    forEachSweepCase([&](int sunAz, float sunEl, float pitch) {
+        reference::Comparison cmp = sweepCase(s, sunAz, sunEl, pitch);
+        for (const char* technique : {"lispsm", "psm", "lispsm-tiled"}) {
+            const MaskComparison m = compareShadowMasks(cmp, cmp.evaluate(technique, 1024, 0));
+            // A lost shadow is a region; a dozen scattered pixels (0.08%) are sub-pixel
+            // slivers of distant posts that no 1024^2 map resolves.
+            EXPECT_LE(m.mismatchesAwayFromEdges, 12)
+                << technique << " sun az " << sunAz << " el " << sunEl << " pitch " << pitch << ": " << m.mismatchesAwayFromEdges
+                << " pixels away from edges differ (" << m.mismatches << " in all, " << m.expectedOn << " shadowed)";
+            worst = std::max(worst, m.mismatchesAwayFromEdges);
+            ++cases;
+        }
+    });
     std::printf("sweep of %d technique/camera/sun cases: at most %d pixels away from shadow edges differ\n", cases, worst);
 }
 
@@ -86,26 +92,23 @@ TEST(ViewDependent, NoShadowIsLostOverASweepOfCameraAndSunAngles) {
 TEST(ViewDependent, LookupsLeftOutChangeNoPixelOverTheSweep) {
     scene::Scene s = sweepScene();
     int cases = 0, split = 0;
-    for (int sunAz : {0, 90, 180, 270})
-        for (float sunEl : {25.0f, 70.0f})
-            for (float pitch : {-12.0f, -50.0f, -88.0f}) {
-                aimSweep(s, sunAz, sunEl, pitch);
-                for (const char* technique : {"lispsm", "psm", "lispsm-tiled", "cascaded"}) {
-                    std::vector<float> pictures[2];
-                    for (int everywhere = 0; everywhere < 2; ++everywhere) {
-                        render::RenderOptions options = optionsFor(technique);
-                        options.shadowOnlyWhereCast = everywhere == 0;
-                        render::Renderer renderer(s, options);
-                        render::OffscreenTarget target(160, 96);
-                        renderer.render(0.0f, s.camera, 160, 96, target.framebuffer());
-                        pictures[everywhere] = renderer.readLinear();
-                        if (everywhere == 0) split += renderer.tintShading().unshadowedPieces > 0;
-                    }
-                    EXPECT_EQ(differingPixels(pictures[0], pictures[1]), 0u)
-                        << technique << " sun az " << sunAz << " el " << sunEl << " pitch " << pitch;
-                    ++cases;
-                }
+    forEachSweepCase([&](int sunAz, float sunEl, float pitch) {
+        aimSweep(s, sunAz, sunEl, pitch);
+        for (const char* technique : {"lispsm", "psm", "lispsm-tiled", "cascaded"}) {
+            std::vector<float> pictures[2];
+            for (int everywhere = 0; everywhere < 2; ++everywhere) {
+                render::RenderOptions options = optionsFor(technique);
+                options.shadowOnlyWhereCast = everywhere == 0;
+                render::Renderer renderer(s, options);
+                render::OffscreenTarget target(160, 96);
+                renderer.render(0.0f, s.camera, 160, 96, target.framebuffer());
+                pictures[everywhere] = renderer.readLinear();
+                if (everywhere == 0) split += renderer.tintShading().unshadowedPieces > 0;
             }
+            EXPECT_EQ(differingPixels(pictures[0], pictures[1]), 0u) << technique << " sun az " << sunAz << " el " << sunEl << " pitch " << pitch;
+            ++cases;
+        }
+    });
     std::printf("%d cases, %d of them shaded in part without the sun's lookup\n", cases, split);
     EXPECT_GT(split, cases / 4);
 }
