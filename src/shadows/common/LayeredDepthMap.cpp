@@ -113,7 +113,7 @@ void LayeredDepthMap::renderPlain(const LayerPass& pass, const TexelRect& read, 
     drawInto(layerTargets_[l], pass, draw, Motion::Any, true);
     // What it holds: its still casters' depth but where the animated ones were drawn, so that a
     // still depth drawn next frame for the same view needs copying back only there.
-    movingDrawn_[l] = isEmpty(intersection(moving, draw)) ? TexelRect(0) : intersection(moving, draw);
+    movingDrawn_[l] = intersection(moving, draw);
     overStill_[l] = pass.animated ? pass.keyOf(draw, Motion::Still) : 0;
 }
 
@@ -142,7 +142,7 @@ void LayeredDepthMap::renderOverStill(const LayerPass& pass, const TexelRect& re
     drawn_[l] = stillDrawn_[l];
     const TexelRect movingDraw = intersection(moving, drawn_[l]);
     if (!isEmpty(movingDraw)) drawInto(layerTargets_[l], pass, movingDraw, Motion::Moving, false);
-    movingDrawn_[l] = isEmpty(movingDraw) ? TexelRect(0) : movingDraw;
+    movingDrawn_[l] = movingDraw;
     overStill_[l] = stillHolds_[l];
     // With nothing animated drawn in it, the layer is the still depth: kept as a plain layer too.
     holds_[l] = isEmpty(movingDraw) ? pass.keyOf(drawn_[l], Motion::Any) : 0;

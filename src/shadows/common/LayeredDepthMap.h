@@ -66,7 +66,7 @@ private:
     std::vector<std::uint64_t> overStill_;    // per layer: the still casters' digest its texels hold but where movingDrawn_ (0: unknown)
     std::vector<TexelRect> movingDrawn_;
     std::vector<std::uint64_t> viewKeys_;     // per layer: last frame's view (matrix and clip plane)
-    int resolution_ = 0, layers_ = 0, readRoom_ = 0;
+    int resolution_ = 0, layers_ = 0;
     DepthCasterProgram casters_;
     gl::Program restore_;  // depth_restore.frag, made when first needed
     gl::VertexArray fullscreenVao_;

@@ -109,9 +109,12 @@ glm::mat4 tileProjection(const scene::Camera& camera, float aspect, int cols, in
 
 WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                      const WarpScene& scene, const LispsmOptions& options) {
-    WarpedView w;
     WarpBody body;
-    if (!makeWarpBody(sun, cameraViewProj, scene, body)) return w;
+    return makeWarpBody(sun, cameraViewProj, scene, body) ? fitLispsm(sun, camera, body, options) : WarpedView{};
+}
+
+WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const WarpBody& body, const LispsmOptions& options) {
+    WarpedView w;
     const glm::vec3 d = glm::normalize(sun.direction);
     const float cosGamma = glm::dot(body.axis, d);
     w.sinGamma = std::sqrt(std::max(0.0f, 1.0f - cosGamma * cosGamma));
@@ -153,9 +156,12 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
 
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                   const WarpScene& scene, float minNear) {
-    WarpedView w;
     WarpBody body;
-    if (!makeWarpBody(sun, cameraViewProj, scene, body)) return w;
+    return makeWarpBody(sun, cameraViewProj, scene, body) ? fitPsm(sun, camera, body, minNear) : WarpedView{};
+}
+
+WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const WarpBody& body, float minNear) {
+    WarpedView w;
     const glm::vec3 v = body.axis;
     auto depthOf = [&](const glm::vec3& p) { return glm::dot(p - camera.position, v); };
     float visibleNear = std::numeric_limits<float>::max(), visibleFar = 0.0f, casterNear = visibleNear, casterFar = 0.0f;

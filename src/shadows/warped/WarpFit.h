@@ -73,6 +73,10 @@ WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const
 WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const glm::mat4& cameraViewProj,
                   const WarpScene& scene, float minNear = 0.02f);
 
+// Both fitted to a body made already (makeWarpBody), for a caller that needs the body too.
+WarpedView fitLispsm(const scene::Light& sun, const scene::Camera& camera, const WarpBody& body, const LispsmOptions& options);
+WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const WarpBody& body, float minNear);
+
 // Held views, as the plain sun's box (LightSpace.h, kBoxSlack) and the cascades hold theirs, so
 // that a moving camera has the warped maps drawn every few frames instead of every frame:
 // `view` with `room` to spare around its body, its clip-space image shrunk by 1 + room about its

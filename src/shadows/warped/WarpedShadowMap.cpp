@@ -60,7 +60,7 @@ void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
 // light, the resolution, the grid or a parameter, gets the tight fit, as a single frame does.
 void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun, glm::ivec2 grid) {
     const scene::Camera& cam = *frame.camera;
-    const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
+    const LightSpace& plain = (*frame.lightSpaces)[static_cast<std::size_t>(light_)];
     // Tiles reach only as far as the scene does: a 1 km far plane must not thin the warp.
     const float far = std::min(cam.far, glm::length(cam.position - frame.sceneBounds.center()) +
                                             0.5f * glm::length(frame.sceneBounds.extent()));
@@ -70,32 +70,32 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
         for (const auto& obj : frame.scene->objects)
             where.objects.push_back(frame.scene->meshes[static_cast<std::size_t>(obj.mesh)].bounds.transformed(obj.transformAt(frame.time)));
     const std::uint64_t fitKey = util::Digest()
-                                     .add(sun.direction, res, grid, nScale_, minSinGamma_, nearFromCamera_, psmMinNear_)
+                                     .add(sun.direction, plain.resolution, grid, nScale_, minSinGamma_, nearFromCamera_, psmMinNear_)
                                      .value();
     const bool hold = frame.holdSunBox && fitKey == fitKey_ && static_cast<int>(views_.size()) == grid.x * grid.y;
     fitKey_ = fitKey;
     grid_ = grid;
-    const LightSpace& plain = (*frame.lightSpaces)[static_cast<std::size_t>(light_)];
     float coarsest = plain.texelScale;  // of the maps on the bodies their pixels lie in
     std::vector<WarpedView> views;
     for (int r = 0; r < grid.y; ++r)
         for (int c = 0; c < grid.x; ++c) {
             const glm::mat4 tile = tileProjection(cam, frame.aspect, grid.x, grid.y, c, r, reach) * cam.view();
-            WarpedView v = warp_ == Warp::Lispsm ? fitLispsm(sun, cam, tile, where, {nScale_, minSinGamma_, nearFromCamera_})
-                                                 : fitPsm(sun, cam, tile, where, psmMinNear_);
             WarpBody body;
-            const bool seen = v.valid && makeWarpBody(sun, tile, where, body);
+            WarpedView v;
+            if (makeWarpBody(sun, tile, where, body))
+                v = warp_ == Warp::Lispsm ? fitLispsm(sun, cam, body, {nScale_, minSinGamma_, nearFromCamera_})
+                                          : fitPsm(sun, cam, body, psmMinNear_);
             if (!v.valid) {  // the tile sees nothing of the scene: the plain fit keeps lookups defined
                 v.viewProj = plain.viewProj[0];
                 v.shadowMatrix = plain.shadowMatrix;
-            } else if (hold && seen) {
-                v = followWarpedView(v, &views_[views.size()], body, sun.direction);
+                views.push_back(v);
+                continue;
             }
+            if (hold) v = followWarpedView(v, &views_[views.size()], body, sun.direction);
             // Over the body's corners; a margin for texels that grow faster than linearly between
             // them (PSM's double projection).
-            if (seen)
-                for (const glm::vec3& p : body.visible)
-                    coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, res));
+            for (const glm::vec3& p : body.visible)
+                coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, plain.resolution));
             views.push_back(v);
         }
     views_ = std::move(views);
