@@ -845,10 +845,12 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
 // receiver itself (one that shadows none of its own lit points: Draw::selfShadowFree) or what lies
 // behind it, and its lookup answers exactly 1; yet llvmpipe runs that lookup, masked, for every
 // pixel. The receiver's pixels off every caster's footprint (render/TintReach.h: padded by the
-// technique's shadowReachTexels and the normal offset; an opaque caster's on the side of it away
+// technique's shadowReachTexels and the normal offset, then, where less, by its
+// shadowReachTexelsWithin that footprint's box: a pixel nearer the caster than the reach of the
+// maps it reads lies within both pads; an opaque caster's on the side of it away
 // from the light, within the lookup's shadowReachDepth, a translucent one's on both sides) are
 // shaded with a build that leaves the lookup out. Measured on the default scene: see
-// docs/measurements.md, stops 53 and 54.
+// docs/measurements.md, stops 53, 54 and 58.
 void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block,
                               const glm::mat4& viewProj, int width, int height) const {
     const float reach = technique_->shadowReachTexels(), depthReach = technique_->shadowReachDepth();
@@ -896,24 +898,36 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
                 // box, within the lookup's depth reach); translucent ones tint through CSSM's and
                 // the tint maps' layer tests, whose reach in depth is not bounded here.
                 const float casterReach = c.opaque ? opaqueReach : -1.0f;
-                const auto footprint = [&](const OrientedBox& receiverPart) {
-                    return casterReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiverPart, pad, casterReach)
-                                               : shadowFootprint(light, caster, receiverPart, pad);
+                const auto footprint = [&](const OrientedBox& receiverPart, float padTexels) {
+                    return casterReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiverPart, padTexels, casterReach)
+                                               : shadowFootprint(light, caster, receiverPart, padTexels);
                 };
-                bool made = false;
                 // The whole footprint first, then its cells (if any): the whole's screen rectangle
                 // alone where it is no wider and no taller than two cells of the grid, which its
                 // cells' could not beat by much (scenes/street.json: 190 casters).
-                std::vector<scene::Bounds>& parts = shadowCells_.at(
-                    util::Digest().add(lightKeys[static_cast<std::size_t>(l)], c.key, receiverKey, pad, casterReach, byCells).value(), made);
-                if (made) {
-                    const scene::Bounds whole = footprint(receiver);
-                    const auto add = [&parts](const scene::Bounds& part) { parts.push_back(part); };
-                    if (!whole.empty()) {
-                        add(whole);
-                        if (byCells) cellsOf(footprint, whole, kShadowReachLevels, add);
+                const auto partsPaddedBy = [&](float padTexels) -> const std::vector<scene::Bounds>& {
+                    bool made = false;
+                    std::vector<scene::Bounds>& parts = shadowCells_.at(
+                        util::Digest().add(lightKeys[static_cast<std::size_t>(l)], c.key, receiverKey, padTexels, casterReach, byCells).value(),
+                        made);
+                    if (made) {
+                        const auto padded = [&](const OrientedBox& receiverPart) { return footprint(receiverPart, padTexels); };
+                        const scene::Bounds whole = padded(receiver);
+                        const auto add = [&parts](const scene::Bounds& part) { parts.push_back(part); };
+                        if (!whole.empty()) {
+                            add(whole);
+                            if (byCells) cellsOf(padded, whole, kShadowReachLevels, add);
+                        }
                     }
+                    return parts;
+                };
+                const std::vector<scene::Bounds>* found = &partsPaddedBy(pad);
+                // Padded by the reach of the maps read within that footprint's box, where less.
+                if (!found->empty()) {
+                    const float near = technique_->shadowReachTexelsWithin(l, found->front());
+                    if (near >= 0.0f && near < reach) found = &partsPaddedBy(near + light.shadow.z + 2.0f);
                 }
+                const std::vector<scene::Bounds>& parts = *found;
                 if (parts.empty()) continue;
                 const PixelRect whole = screenRect(parts.front(), viewProj, width, height).intersected(own);
                 if (whole.empty()) continue;

@@ -198,6 +198,17 @@ public:
     // it. Negative (the default) where that is not bounded by the light's map, or where the
     // answer may be below 1 with no caster near (moment maps' light bleeding and variance floor).
     virtual float shadowReachTexels() const { return -1.0f; }
+    // shadowReachTexels for light `light`'s lookups at receivers inside `region` (a world box):
+    // less where the maps read there are finer than the coarsest the frame has (cascades near the
+    // camera, warped texels near the warp's near plane, other lights' plain maps). The renderer
+    // pads each footprint first by shadowReachTexels, then by this over that footprint's box: a
+    // receiver point within either pad of the caster lies in the box (Renderer::addShadowReach).
+    // Never above shadowReachTexels; the default is it.
+    virtual float shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
+        (void)light;
+        (void)region;
+        return shadowReachTexels();
+    }
     // How much deeper than its receiver's biased depth (window depth of the light's map) the
     // lookup may compare with an opaque caster's depths: 0 where every compare takes the
     // receiver's own depth, the receiver-plane taps' clamp where they extrapolate it (0.01,

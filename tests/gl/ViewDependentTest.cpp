@@ -113,6 +113,53 @@ TEST(ViewDependent, LookupsLeftOutChangeNoPixelOverTheSweep) {
     EXPECT_GT(split, cases / 4);
 }
 
+// Footprints are padded by the reach of the maps read where they lie (shadowReachTexelsWithin):
+// near the camera the first cascade's, or the warped map's finest texels, less than the frame's
+// coarsest; over the whole view, and for a far region, the coarsest; other lights' hard lookups 2.
+// (The sweep above checks that the pixels stay as with every lookup made.)
+TEST(ViewDependent, FootprintsNearTheCameraArePaddedByTheNearMapsTexels) {
+    scene::Scene s = sweepScene();
+    s.lights.push_back(s.lights[0]);  // a second sun: the view-dependent maps take the first only
+    s.lights[1].direction = glm::vec3(0.3f, -1.0f, 0.2f);
+    const glm::vec3 eye = s.camera.position, ahead = glm::normalize(s.camera.target - s.camera.position);
+    // A patch of the ground `distance` ahead of the camera (receivers lie on surfaces).
+    const auto around = [&](float distance) {
+        const glm::vec3 at = eye + ahead * distance;
+        scene::Bounds b;
+        b.add(glm::vec3(at.x - 0.01f * distance, 0.0f, at.z - 0.01f * distance));
+        b.add(glm::vec3(at.x + 0.01f * distance, 0.01f, at.z + 0.01f * distance));
+        return b;
+    };
+    for (const char* technique : {"cascaded", "lispsm", "psm"}) {
+        render::RenderOptions options = optionsFor(technique);
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(160, 96);
+        renderer.render(0.0f, s.camera, 160, 96, target.framebuffer());
+        const shadows::ShadowTechnique& t = renderer.technique();
+        const float coarsest = t.shadowReachTexels();
+        scene::Bounds view;
+        view.add(eye);
+        view.add(eye + ahead * 60.0f + glm::vec3(20.0f, -2.0f, 0.0f));
+        view.add(eye + ahead * 60.0f - glm::vec3(20.0f, 2.0f, 0.0f));
+        float nearDistance = 4.0f, farDistance = 40.0f;
+        if (std::string(technique) == "cascaded") {
+            const auto& cascades = dynamic_cast<const shadows::CascadedShadowMap&>(t).cascades();
+            ASSERT_EQ(cascades.size(), 4u);
+            nearDistance = 0.5f * cascades[0].splitFar;                        // before its blend band
+            farDistance = 0.5f * (cascades[3].splitNear + cascades[3].splitFar);  // the last cascade alone
+        }
+        std::printf("%s: reach %.0f texels, %.0f at %.2f m, %.0f at %.1f m, %.0f over the view\n", technique, coarsest,
+                    t.shadowReachTexelsWithin(0, around(nearDistance)), nearDistance, t.shadowReachTexelsWithin(0, around(farDistance)),
+                    farDistance, t.shadowReachTexelsWithin(0, view));
+        EXPECT_GT(coarsest, 2.0f) << technique << ": the far maps' texels are coarser than the plain map's";
+        EXPECT_LT(t.shadowReachTexelsWithin(0, around(nearDistance)), coarsest) << technique;
+        EXPECT_GE(t.shadowReachTexelsWithin(0, around(nearDistance)), 2.0f) << technique;
+        EXPECT_EQ(t.shadowReachTexelsWithin(0, view), coarsest) << technique;
+        if (std::string(technique) == "cascaded") EXPECT_EQ(t.shadowReachTexelsWithin(0, around(farDistance)), coarsest);
+        EXPECT_EQ(t.shadowReachTexelsWithin(1, around(nearDistance)), 2.0f) << technique << ": the second sun's plain map";
+    }
+}
+
 // Cascades chosen either way (CASCADE_SELECT, compiled into the lookup: by view depth, or by the
 // first cascade box that holds the point) lose no shadow and invent none over the sweep's pitches,
 // with the sun low behind the viewer and high beside it.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <cmath>
+#include <limits>
 
 namespace penumbra::shadows {
 
@@ -63,10 +64,11 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
         }
         cameraView_ = cam.view();
     }
-    const float plainTexel = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].texelScale;
-    float coarsest = plainTexel;
+    plainTexel_ = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].texelScale;
+    normalOffset_ = sun.shadow.normalOffset;
+    float coarsest = plainTexel_;
     for (const Cascade& c : fitted_) coarsest = std::max(coarsest, c.texelWorld);
-    reachTexels_ = reachInPlainTexels(coarsest, plainTexel, sun.shadow.normalOffset);
+    reachTexels_ = reachInPlainTexels(coarsest, plainTexel_, normalOffset_);
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
@@ -74,6 +76,30 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     // drawn with as much room around their reads.
     cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res),
                      holdBoxes ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
+}
+
+// The lookup (lookup.glsl) reads cascade c at view depths from the start of cascade c - 1's
+// blend band (the first: from the camera) to split c + 1; a box's view depths lie between its
+// corners'. By projection (select=projection) any cascade whose box holds a point may be first:
+// the coarsest of all.
+float CascadedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
+    if (reachTexels_ < 0.0f) return reachTexels_;
+    if (light != light_) return 2.0f;  // a plain map's single compare (HardShadowMap)
+    if (select_ != 0 || region.empty() || splits_.size() != fitted_.size() + 1) return reachTexels_;
+    float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
+    for (int k = 0; k < 8; ++k) {
+        const float depth = -(cameraView_ * glm::vec4(region.corner(k), 1.0f)).z;
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+    float coarsest = plainTexel_;
+    for (std::size_t c = 0; c < fitted_.size(); ++c) {
+        const bool first = c == 0, last = c + 1 == fitted_.size();
+        const float from = first ? std::numeric_limits<float>::lowest() : splits_[c] - blend_ * (splits_[c] - splits_[c - 1]);
+        const float to = last ? std::numeric_limits<float>::max() : splits_[c + 1];
+        if (farthest >= from && nearest <= to) coarsest = std::max(coarsest, fitted_[c].texelWorld);
+    }
+    return std::min(reachInPlainTexels(coarsest, plainTexel_, normalOffset_), reachTexels_);
 }
 
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of

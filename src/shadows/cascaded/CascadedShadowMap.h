@@ -21,6 +21,9 @@ public:
     // One texel compared at the receiver's own depth, in the coarsest cascade's texels
     // (reachInPlainTexels, set by renderMaps). Other lights' hard lookups reach less.
     float shadowReachTexels() const override { return reachTexels_; }
+    // Over the cascades that pixels in `region` read (its view depths, blend bands included);
+    // other lights' hard lookups: 2, as hard's.
+    float shadowReachTexelsWithin(int light, const scene::Bounds& region) const override;
     float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
     // the other way too, a matrix product per cascade tried).
@@ -42,6 +45,7 @@ private:
     bool stabilize_ = true, debugTint_ = false, freeze_ = false, sdsm_ = false, drawFrusta_ = true, fitReceivers_ = true;
     int light_ = -1, fittedResolution_ = 0;
     float reachTexels_ = -1.0f;  // shadowReachTexels: negative until the cascades are fitted
+    float plainTexel_ = 0.0f, normalOffset_ = 0.0f;  // the sun's plain map's, for reachInPlainTexels
     glm::mat4 cameraView_{1.0f};
     std::vector<float> splits_;
     std::vector<Cascade> fitted_;

@@ -76,6 +76,7 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
     fitKey_ = fitKey;
     grid_ = grid;
     float coarsest = plain.texelScale;  // of the maps on the bodies their pixels lie in
+    reachView_.reset();
     std::vector<WarpedView> views;
     for (int r = 0; r < grid.y; ++r)
         for (int c = 0; c < grid.x; ++c) {
@@ -96,11 +97,37 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
             // them (PSM's double projection).
             for (const glm::vec3& p : body.visible)
                 coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, plain.resolution));
+            if (grid == glm::ivec2(1))
+                reachView_ = ReachView{tile, frame.sceneBounds, glm::vec3(1e-3f * glm::length(frame.sceneBounds.extent())), sun.direction,
+                                       plain.resolution};
             views.push_back(v);
         }
     views_ = std::move(views);
-    reachTexels_ = reachInPlainTexels(coarsest, plain.texelScale, sun.shadow.normalOffset);
+    plainTexel_ = plain.texelScale;
+    normalOffset_ = sun.shadow.normalOffset;
+    reachTexels_ = reachInPlainTexels(coarsest, plainTexel_, normalOffset_);
     cameraViewProj_ = cam.projection(frame.aspect) * cam.view();
+}
+
+// Pixels lie in the camera's body: of `region`, only its part inside the view (and the scene's
+// box) is read. Over that part's corners, as fitViews over the body's, with the same margin, where
+// each lies in front of the warp; else the coarsest of the frame.
+float WarpedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
+    if (reachTexels_ < 0.0f) return reachTexels_;
+    if (light != light_) return 2.0f;  // a plain map's single compare (HardShadowMap)
+    if (!reachView_ || region.empty() || views_.size() != 1) return reachTexels_;
+    // A flat region (a floor's footprint) has a box of zero thickness: the body's margin.
+    scene::Bounds grown = region;
+    grown.min = glm::max(grown.min - reachView_->margin, reachView_->scene.min);
+    grown.max = glm::min(grown.max + reachView_->margin, reachView_->scene.max);
+    if (glm::any(glm::greaterThan(grown.min, grown.max))) return 2.0f;  // outside the scene: no receiver there
+    const WarpedView& view = views_.front();
+    float coarsest = plainTexel_;
+    for (const glm::vec3& p : frustumInsideBox(reachView_->frustum, grown)) {
+        if (!((view.shadowMatrix * glm::vec4(p, 1.0f)).w > 0.0f)) return reachTexels_;
+        coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(view.shadowMatrix, p, reachView_->lightDirection, reachView_->resolution));
+    }
+    return std::min(reachInPlainTexels(coarsest, plainTexel_, normalOffset_), reachTexels_);
 }
 
 glm::ivec2 WarpedShadowMap::requestedGrid() const { return {std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4)}; }

@@ -22,6 +22,9 @@ public:
     // One texel compared at the receiver's own depth, in the coarsest texel of the warped maps on
     // the camera's body (reachInPlainTexels, set by fitViews; none while frozen).
     float shadowReachTexels() const override { return reachTexels_; }
+    // A single map's (no tiles): over `region`'s part of the camera's body, as shadowReachTexels
+    // over the whole body; other lights' hard lookups: 2, as hard's.
+    float shadowReachTexelsWithin(int light, const scene::Bounds& region) const override;
     float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
     // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
@@ -50,6 +53,16 @@ private:
     std::vector<WarpedView> views_;  // this frame's, one per tile (last frame's while fitViews runs)
     std::uint64_t fitKey_ = 0;       // what views_ were fitted under: light, resolution, grid, parameters
     float reachTexels_ = -1.0f;      // shadowReachTexels
+    // shadowReachTexelsWithin's: the single view's frustum (none with tiles), the scene's box and
+    // the body's margin (makeWarpBody), and what warpedTexelWorld and reachInPlainTexels take.
+    struct ReachView {
+        glm::mat4 frustum;
+        scene::Bounds scene;
+        glm::vec3 margin, lightDirection;
+        int resolution;
+    };
+    std::optional<ReachView> reachView_;
+    float plainTexel_ = 0.0f, normalOffset_ = 0.0f;
     LayeredDepthMap warped_;
     DepthAndTintMaps maps_;
 };
