@@ -37,8 +37,10 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
         "faces; the same pixels and maps but for a few silhouette texels, less raster work)");
     command.add_flag_callback(
         "--tint-everywhere", [&options] { options.tintOnlyWhereReached = false; },
-        "shade every opaque receiver with the whole coloured-shadow lookup (default: where no translucent caster's "
-        "shadow can reach, a program that reads no tint; the same pixels)");
+        "shade every receiver with the whole coloured-shadow lookup (default: where no translucent caster's "
+        "shadow can reach, a program that reads no tint, the same pixels; on glass with every other layer on one side, "
+        "its own layers in front taken from its faces, not from the map: the two differ at rims, and on "
+        "scenes/glass.json by up to 16/255 over the thin green box, whose own layers the whole lookup reads from the map)");
     command.add_flag_callback(
         "--light-everywhere", [&options] { options.lightOnlyWhereReached = false; },
         "shade every light on every pixel (default: where a projector or spot light's frustum cannot reach, a program "

@@ -106,7 +106,7 @@ TEST_P(TintReach, ShadesEveryPixelAsTheWholeLookupDoes) {
 
 INSTANTIATE_TEST_SUITE_P(Techniques, TintReach,
                          ::testing::Values("hard", "pcf-poisson16", "pcss", "vsm", "shadow-volumes", "cssm2", "cssm1",
-                                           "cssm2:filter=poisson16", "cssm1:filter=cross13"),
+                                           "cssm2:filter=poisson16", "cssm1:filter=cross13", "cascaded", "lispsm", "psm"),
                          [](const ::testing::TestParamInfo<const char*>& info) { return testNameOf(info.param); });
 
 // A split view's column range (render::Columns): the rectangles are the full frame's, cut to the
@@ -190,7 +190,7 @@ TEST(TintReachTranslucent, StackedSlabsGetTheLightTheirLayersInFrontLetThrough) 
 TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeLookupDoesButAtRims) {
     // Also the first scene: a floating pane in front of a glass block on the ground.
     for (const bool glass : {true, false})
-        for (const char* technique : {"hard", "cssm2", "cssm1"}) {
+        for (const char* technique : {"hard", "cssm2", "cssm1", "cascaded", "lispsm"}) {
             scene::Scene s = glass ? glassReceivers() : colouredShadows();
             const Pair both = renderBothWays(s, technique, {}, render::TransparencyMode::SortedObjects);
             const render::Renderer::TintShading& t = both.shading;
@@ -247,18 +247,6 @@ TEST(TintReachTranslucent, TheSplitIsNoFartherFromTheReferenceThanTheWholeLookup
     // rims: far below what a split that loses coloured shadow gives (2.3x and 2x here).
     EXPECT_LE(split.rmse, whole.rmse * 1.001);
     EXPECT_LE(split.wrongShare, whole.wrongShare + 1e-4);
-}
-
-// Techniques whose sun maps are their own (cascades, warps) give every receiver the whole lookup.
-TEST(TintReachOff, CascadesKeepTheWholeLookupEverywhere) {
-    for (const char* technique : {"cascaded", "lispsm"}) {
-        scene::Scene s = colouredShadows();
-        render::Renderer r(s, optionsFor(technique));
-        render::OffscreenTarget target(64, 48);
-        r.render(0.0f, s.camera, 64, 48, target.framebuffer());
-        EXPECT_EQ(r.tintShading().untinted + r.tintShading().split, 0u) << technique;
-        EXPECT_GE(r.tintShading().whole, 4u) << technique;
-    }
 }
 
 }  // namespace

@@ -45,22 +45,19 @@ const vec3 kCascadeTints[8] = vec3[](vec3(1.0, 0.6, 0.6), vec3(0.6, 1.0, 0.6), v
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite site = shadowSite(light, P, N, NdotL);
-    if (!cascadedLight(light)) {
-        if (!site.inside) return vec3(1.0);
-        return compareAt(site, vec2(0.0), 0.0) * tintAt(site);
-    }
+    if (!cascadedLight(light)) return site.inside ? compareAt(site, vec2(0.0), 0.0) * plainMapTint(site, NdotL) : vec3(1.0);
     float depth = -(uCascadeCameraView * vec4(P, 1.0)).z;
     int c = uCascadeCount;
     for (int i = 0; i < uCascadeCount; ++i) {
         bool chosen = kCascadeSelect == 0 ? depth < uCascadeSplits[i + 1] : insideCascade(i, P);
         if (chosen) { c = i; break; }
     }
-    if (c >= uCascadeCount) return site.inside ? tintAt(site) : vec3(1.0);  // beyond the last split: lit
+    if (c >= uCascadeCount) return plainMapTint(site, NdotL);  // beyond the last split: lit
     float lit = sampleCascade(c, light, P, N, NdotL);
     // Blend into the next cascade over the last uCascadeBlend of this one.
     float start = uCascadeSplits[c + 1] - uCascadeBlend * (uCascadeSplits[c + 1] - uCascadeSplits[c]);
     if (c + 1 < uCascadeCount && depth > start && uCascadeBlend > 0.0)
         lit = mix(lit, sampleCascade(c + 1, light, P, N, NdotL), (depth - start) / (uCascadeSplits[c + 1] - start));
-    vec3 result = lit * (site.inside ? tintAt(site) : vec3(1.0));
+    vec3 result = lit * plainMapTint(site, NdotL);
     return uCascadeDebug != 0 ? result * kCascadeTints[c] : result;
 }

@@ -49,7 +49,7 @@ const vec3 kTileTints[4] = vec3[](vec3(1.0, 0.6, 0.6), vec3(0.6, 1.0, 0.6), vec3
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite site = shadowSite(light, P, N, NdotL);
-    vec3 tint = site.inside ? tintAt(site) : vec3(1.0);
+    vec3 tint = plainMapTint(site, NdotL);
     if (!warpedLight(light)) return site.inside ? compareAt(site, vec2(0.0), 0.0) * tint : vec3(1.0);
     LightData L = uLights[light];
     vec3 toLight = -normalize(L.directionFar.xyz);

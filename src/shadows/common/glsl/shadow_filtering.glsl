@@ -279,6 +279,19 @@ vec3 tintAt(ShadowSite s) {
 #endif
 }
 
+// The tint at a site of the light's plain map, for a lookup whose depth compare reads maps of its
+// own (cascades, warped views): white off the map; a translucent receiver that no other layer's
+// tint reaches (RECEIVER_UNTINTED: the renderer's tint split) gets only its own layers in front,
+// read from no map, as hard's lookup.
+vec3 plainMapTint(ShadowSite s, float NdotL) {
+    if (!s.inside) return vec3(1.0);
+#if defined(MATERIAL_TRANSLUCENT) && defined(RECEIVER_UNTINTED) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    return ownLayersInFront(NdotL);
+#else
+    return tintAt(s);
+#endif
+}
+
 // World distance along the light's axis, from window depth.
 float worldShadowDepth(int light, float windowDepth) {
     LightData L = uLights[light];
