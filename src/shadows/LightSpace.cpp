@@ -83,6 +83,7 @@ std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::
 constexpr float kSnapTexels = 8.0f;
 constexpr float kSizeSteps = 8.0f;  // ladder steps per doubling
 const float kBoxSlack = 1.0f / 16.0f;
+const float kHeldCoarser = std::exp2(1.0f / kSizeSteps) * (1.0f + kBoxSlack);
 
 float reachInPlainTexels(float coarsestTexel, float plainTexel, float normalOffset) {
     if (!(plainTexel > 0.0f)) return -1.0f;

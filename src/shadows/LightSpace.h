@@ -43,6 +43,10 @@ LightSpace computeLightSpace(const scene::Light& light, int resolution, const sc
 
 // The room a moved directional box leaves around the view, as a share of the view's extent per axis.
 extern const float kBoxSlack;
+// How much coarser a held view's texels may be than this frame's own fit: a step of the size
+// ladder (2^(1/8)) and kBoxSlack. The sun box's bound (computeLightSpace), and the rule of the
+// held warped views (followWarpedView).
+extern const float kHeldCoarser;
 
 // ShadowTechnique::shadowReachTexels of a lookup that compares one texel of a map of its own
 // (cascades, warped views) at the receiver's own depth: the renderer pads each caster's shadow by

@@ -360,7 +360,7 @@ TEST_P(SunBox, AHeldBoxIsDrawnAgainEveryFewFramesOfAPanAndShadowsWhereRaysSay) {
     EXPECT_GE(fitted.mapsDrawn, 10) << "the pan must move a fitted box in most frames";
     EXPECT_LE(held.mapsDrawn * 2, fitted.mapsDrawn) << "held, in half the frames or fewer (cascaded: any of four boxes)";
     // What holding costs: at most a step of the size ladder and the slack over a fitted box.
-    EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * std::exp2(1.0f / 8.0f) * (1.0f + shadows::kBoxSlack) * 1.001f);
+    EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * shadows::kHeldCoarser * 1.001f);
     EXPECT_EQ(gl::debugErrorCount(), 0);
 }
 
@@ -392,7 +392,7 @@ TEST(HeldWarps, AreDrawnAgainEveryFewFramesOfASlowPanAndShadowWhereRaysSay) {
                     fitted.finestTexel, fitted.coarsestTexel);
         EXPECT_EQ(fitted.mapsDrawn, frames - 1) << technique << ": fitted, the view moves in every frame";
         EXPECT_LE(held.mapsDrawn * 3, fitted.mapsDrawn) << technique;
-        EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * shadows::kHeldWarpCoarser * 1.001f) << technique;
+        EXPECT_LE(held.coarsestTexel, fitted.coarsestTexel * shadows::kHeldCoarser * 1.001f) << technique;
     }
     EXPECT_EQ(gl::debugErrorCount(), 0);
 }

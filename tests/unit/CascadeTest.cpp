@@ -146,7 +146,7 @@ TEST(PlainDirectionalMap, AHeldBoxMovesRarelyAndHoldsTheView) {
             ASSERT_TRUE(uv.x > -1e-4f && uv.x < 1.0001f && uv.y > -1e-4f && uv.y < 1.0001f)
                 << "frame " << k << ": a point the camera sees lies outside the held box (" << uv.x << ", " << uv.y << ")";
         }
-        EXPECT_LE(heldNow.texelScale, fittedNow.texelScale * std::exp2(1.0f / 8.0f) * (1.0f + kBoxSlack) * 1.001f) << "frame " << k;
+        EXPECT_LE(heldNow.texelScale, fittedNow.texelScale * kHeldCoarser * 1.001f) << "frame " << k;
         if (heldNow.box.z == held.box.z && heldNow.box.w == held.box.w) expectWholeTiles(held, heldNow, probe, k);
         held = heldNow;
         fitted = fittedNow;

@@ -150,7 +150,7 @@ TEST(Warp, EveryVisiblePointFallsInsideTheMapOverASweep) {
 // A camera walking 5 m down the road in 100 frames (3 m/s at 60 frames a second), swaying ±6°:
 // held views (followWarpedView) move in a fifth of the frames, yet in every frame every point of
 // the body and of its extrusion towards the light lies in the view's clip volume, in front of its
-// clip plane, and its texels on the body are at most kHeldWarpCoarser those of the frame's own
+// clip plane, and its texels on the body are at most kHeldCoarser those of the frame's own
 // fit. Walking faster moves them more often: near the camera a warp's texels grow with the
 // distance walked (0.15 m a frame: about every other frame).
 TEST(Warp, AHeldViewMovesRarelyAndHoldsTheBody) {
@@ -188,7 +188,7 @@ TEST(Warp, AHeldViewMovesRarelyAndHoldsTheBody) {
         std::printf("%s, 99 frames of a walk: the held view moved in %d; texels at most %.3fx the fit's\n", warp ? "psm" : "lispsm", moves,
                     worstRatio);
         EXPECT_LE(moves, 33) << "held, the view moves in a third of the frames or fewer";
-        EXPECT_LE(worstRatio, kHeldWarpCoarser * 1.0001f);
+        EXPECT_LE(worstRatio, kHeldCoarser * 1.0001f);
     }
 }
 

@@ -233,11 +233,9 @@ WarpedView fitPsm(const scene::Light& sun, const scene::Camera& camera, const Wa
     return finish(w, proj * view * pp);
 }
 
-const float kHeldWarpCoarser = std::exp2(1.0f / 8.0f) * (1.0f + kBoxSlack);
-
 WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection) {
     if (!last || !fitted.valid) return fitted;
-    return warpedViewHolds(*last, fitted, body, lightDirection, kHeldWarpCoarser) ? *last : withRoom(fitted, kBoxSlack);
+    return warpedViewHolds(*last, fitted, body, lightDirection, kHeldCoarser) ? *last : withRoom(fitted, kBoxSlack);
 }
 
 float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& lightDirection, int resolution) {

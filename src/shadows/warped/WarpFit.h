@@ -88,11 +88,10 @@ WarpedView withRoom(WarpedView view, float room);
 bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const WarpBody& body, const glm::vec3& lightDirection,
                      float coarser);
 // This frame's view, from its own fit to `body` and last frame's view (null: none, e.g. the first
-// frame): last frame's while it holds with its texels at most a ladder step (2^(1/8), as the plain
-// box's) and kBoxSlack coarser than the fit's (kHeldWarpCoarser); else the fit with kBoxSlack of
-// room; without last frame's, the fit itself, so a single frame is as it was.
+// frame): last frame's while it holds with its texels at most kHeldCoarser those of the fit (as the
+// plain box's); else the fit with kBoxSlack of room; without last frame's, the fit itself, so a
+// single frame is as it was.
 WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection);
-extern const float kHeldWarpCoarser;
 
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
 // perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.
