@@ -141,11 +141,34 @@ scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> plan
     return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
 }
 
+// The convex hull of `points`, counter-clockwise, without points within `tolerance` of a side
+// (Andrew's monotone chain); fewer than 3 points where they lie on a line.
+template <std::size_t N>
+std::vector<glm::vec2> convexHull(std::array<glm::vec2, N> points, float tolerance) {
+    std::sort(points.begin(), points.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const auto turnsLeft = [tolerance](const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
+        const glm::vec2 e = a - o, f = b - o;
+        return e.x * f.y - e.y * f.x > tolerance * glm::length(f - e);
+    };
+    std::vector<glm::vec2> hull(2 * N);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < N; ++i) {  // lower chain
+        while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
+        hull[k++] = points[i];
+    }
+    for (std::size_t i = N - 1, lower = k + 1; i-- > 0;) {  // upper chain
+        while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
+        hull[k++] = points[i];
+    }
+    hull.resize(k > 1 ? k - 1 : k);  // the last point is the first
+    return hull;
+}
+
 // The shadow volume of a caster with corners `caster`, padded by `padTexels`: up to five planes
 // (a sun's prism: four) and the apex where they meet (perspective lights). False when it is
 // unbounded: a caster reaching beside or behind the light (a point light inside a glass ball).
 struct ShadowVolume {
-    std::array<Plane, 6> planes;  // room for one more: a cut
+    std::array<Plane, 7> planes;  // a sun's silhouette has up to six sides; room for one more: a cut
     int count = 0;
     bool hasApex = false;
     glm::vec3 apex{0.0f};
@@ -153,16 +176,30 @@ struct ShadowVolume {
 bool shadowVolume(const gpu::LightData& light, const OrientedBox::Corners& caster, float padTexels, ShadowVolume& out) {
     const float texelScale = light.shadow.w;
     if (static_cast<int>(light.colorType.w) == gpu::kLightDirectional) {
-        // The caster's shadow: the prism along d over its box's extent across the light, padded
-        // by texels of texelScale (the same width everywhere in an orthographic map).
+        // The caster's shadow: the prism along d over its box's silhouette (the convex hull of its
+        // corners seen along d, up to six sides), each side moved out by texels of texelScale (the
+        // same width everywhere in an orthographic map). A rectangle around the silhouette in an
+        // arbitrary frame across d held up to twice its area, and a floor's cut of it more.
         const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
         const glm::vec3 u = perpendicular(d), v = glm::cross(d, u);
         const float pad = padTexels * texelScale;
+        std::array<glm::vec2, 8> q;
         glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& c : caster) {
-            const glm::vec2 q(glm::dot(u, c), glm::dot(v, c));
-            lo = glm::min(lo, q);
-            hi = glm::max(hi, q);
+        for (std::size_t i = 0; i < caster.size(); ++i) {
+            q[i] = glm::vec2(glm::dot(u, caster[i]), glm::dot(v, caster[i]));
+            lo = glm::min(lo, q[i]);
+            hi = glm::max(hi, q[i]);
+        }
+        const std::vector<glm::vec2> hull = convexHull(q, 1e-6f * std::max(hi.x - lo.x, hi.y - lo.y));
+        if (hull.size() >= 3 && hull.size() <= 6) {
+            out.count = 0;
+            for (std::size_t i = 0; i < hull.size(); ++i) {
+                const glm::vec2 a = hull[i], e = hull[(i + 1) % hull.size()] - a;
+                const glm::vec2 outward = glm::normalize(glm::vec2(e.y, -e.x));  // counter-clockwise hull
+                const glm::vec3 n = outward.x * u + outward.y * v;
+                out.planes[static_cast<std::size_t>(out.count++)] = Plane{-n, glm::dot(outward, a) + pad};
+            }
+            return true;
         }
         out.planes = {{{u, pad - lo.x}, {-u, hi.x + pad}, {v, pad - lo.y}, {-v, hi.y + pad}}};
         out.count = 4;
