@@ -88,7 +88,7 @@ const float kHeldCoarser = std::exp2(1.0f / kSizeSteps) * (1.0f + kBoxSlack);
 float reachInPlainTexels(float coarsestTexel, float plainTexel, float normalOffset) {
     if (!(plainTexel > 0.0f)) return -1.0f;
     const float ratio = std::max(coarsestTexel / plainTexel, 1.0f), offset = std::max(normalOffset, 0.0f);
-    return std::exp2(std::ceil(std::log2(std::max(ratio * (offset + 3.0f) - offset - 2.0f, 2.0f))));
+    return std::exp2(std::ceil(std::log2(std::max(ratio * (offset + 3.0f) - offset - 2.0f, kPlainCompareReachTexels))));
 }
 
 namespace {

@@ -48,11 +48,16 @@ extern const float kBoxSlack;
 // held warped views (followWarpedView).
 extern const float kHeldCoarser;
 
+// ShadowTechnique::shadowReachTexels of one compare on the light's plain map at the receiver's own
+// texel (hard's; other lights' lookups in cascaded and the warped maps): that texel and the tint's.
+inline constexpr float kPlainCompareReachTexels = 2.0f;
+
 // ShadowTechnique::shadowReachTexels of a lookup that compares one texel of a map of its own
 // (cascades, warped views) at the receiver's own depth: the renderer pads each caster's shadow by
 // that + the normal offset + 2 texels of the light's plain map (`plainTexel`, LightSpace::texelScale;
 // Renderer::addShadowReach), and the lookup needs the texel it reads, the normal offset and the
-// same 2 of rounding in its own map's coarsest texel (at least the plain map's). Rounded up to a
+// same 2 of rounding in its own map's coarsest texel (at least the plain compare's,
+// kPlainCompareReachTexels). Rounded up to a
 // power of two, so that the renderer's memo of footprints keeps its keys while those maps move.
 float reachInPlainTexels(float coarsestTexel, float plainTexel, float normalOffset);
 

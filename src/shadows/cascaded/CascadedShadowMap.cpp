@@ -84,7 +84,7 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
 // the coarsest of all.
 float CascadedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
     if (reachTexels_ < 0.0f) return reachTexels_;
-    if (light != light_) return 2.0f;  // a plain map's single compare (HardShadowMap)
+    if (light != light_) return kPlainCompareReachTexels;  // other lights: hard's lookup
     if (select_ != 0 || region.empty() || splits_.size() != fitted_.size() + 1) return reachTexels_;
     float nearest = std::numeric_limits<float>::max(), farthest = std::numeric_limits<float>::lowest();
     for (int k = 0; k < 8; ++k) {

@@ -13,7 +13,7 @@ public:
     // builds that read their own layers in front alone, or divide them out of the tint.
     bool ownLayersBuild() const override { return true; }
     // The texel the comparison reads, and the tint's.
-    float shadowReachTexels() const override { return 2.0f; }
+    float shadowReachTexels() const override { return kPlainCompareReachTexels; }
     float shadowReachDepth() const override { return 0.0f; }  // its own depth, compared at one texel
     void bindLookup(const gl::Program&) const override { maps_.bind(); }
 };

@@ -8,18 +8,14 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // Translucent receivers take their own layers out of the tint (tintAt), which needs the
     // receiver's plane: the site, with its derivatives, in this program only.
     ShadowSite s = shadowSite(light, P, N, NdotL);
-    if (!s.inside) return vec3(1.0);
-#if defined(RECEIVER_UNTINTED)
-    // Every other translucent layer around this receiver lies behind it, or none is there
-    // (render/TintReach.h, tintFootprintNotInFront), and its own layers are known
-    // (Draw::ownLayersKnown): the only layers in front of it are its own, read from no map.
-    return compareAt(s, vec2(0.0), 0.0) * ownLayersInFront(NdotL);
-#endif
-    // Every other layer in front (RECEIVER_BEHIND_LAYERS: the whole lookup's division is that
-    // build already), layers on both sides, or own layers not known: the whole lookup. Where
-    // another layer lies behind a solid, the farthest layer at its texels is not its own and its
-    // own cannot be divided out: the build above has no such case.
-    return compareAt(s, vec2(0.0), 0.0) * tintAt(s);
+    // RECEIVER_UNTINTED: every other translucent layer around this receiver lies behind it, or none
+    // is there (render/TintReach.h, tintFootprintNotInFront), and its own layers are known
+    // (Draw::ownLayersKnown): the only layers in front of it are its own, read from no map
+    // (plainMapTint). Else every other layer in front (RECEIVER_BEHIND_LAYERS: the whole lookup's
+    // division is that build already), layers on both sides, or own layers not known: the whole
+    // lookup. Where another layer lies behind a solid, the farthest layer at its texels is not its
+    // own and its own cannot be divided out: the untinted build has no such case.
+    return s.inside ? compareAt(s, vec2(0.0), 0.0) * plainMapTint(s, NdotL) : vec3(1.0);
 #else
     ShadowCoord sc = shadowCoord(light, P, N, NdotL);
     if (!sc.inside) return vec3(1.0);

@@ -48,11 +48,12 @@ WarpedView finish(WarpedView w, const glm::mat4& viewProj) {
 
 }  // namespace
 
+// A thousandth of the scene.
+glm::vec3 warpBodyMargin(const scene::Bounds& sceneBounds) { return glm::vec3(1e-3f * glm::length(sceneBounds.extent())); }
+
 bool makeWarpBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, WarpBody& body) {
     if (scene.objects.empty()) body.visible = frustumInsideBox(cameraViewProj, scene.bounds);
-    // Flat objects (a ground plane) have boxes of zero thickness, which clipping would whittle
-    // down to nothing in rounding: every box gets a margin of a thousandth of the scene.
-    const glm::vec3 margin(1e-3f * glm::length(scene.bounds.extent()));
+    const glm::vec3 margin = warpBodyMargin(scene.bounds);
     for (scene::Bounds box : scene.objects) {
         box.min -= margin;
         box.max += margin;

@@ -49,6 +49,10 @@ struct WarpBody {
 };
 // False when the frustum sees nothing of the scene.
 bool makeWarpBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, WarpBody& body);
+// The room makeWarpBody gives every object's box in a scene of box `sceneBounds`: flat objects (a
+// ground plane) have boxes of zero thickness, which clipping would whittle down to nothing in
+// rounding.
+glm::vec3 warpBodyMargin(const scene::Bounds& sceneBounds);
 
 // `points` and, for each, where the ray towards the light leaves `box` (the casters' reach).
 std::vector<glm::vec3> extrudeTowardLight(const std::vector<glm::vec3>& points, const glm::vec3& toLight,

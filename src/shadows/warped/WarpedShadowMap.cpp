@@ -98,8 +98,7 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
             for (const glm::vec3& p : body.visible)
                 coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, plain.resolution));
             if (grid == glm::ivec2(1))
-                reachView_ = ReachView{tile, frame.sceneBounds, glm::vec3(1e-3f * glm::length(frame.sceneBounds.extent())), sun.direction,
-                                       plain.resolution};
+                reachView_ = ReachView{tile, frame.sceneBounds, warpBodyMargin(frame.sceneBounds), sun.direction, plain.resolution};
             views.push_back(v);
         }
     views_ = std::move(views);
@@ -114,9 +113,9 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
 // each lies in front of the warp; else the coarsest of the frame.
 float WarpedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
     if (reachTexels_ < 0.0f) return reachTexels_;
-    if (light != light_) return 2.0f;  // a plain map's single compare (HardShadowMap)
+    if (light != light_) return kPlainCompareReachTexels;  // other lights: hard's lookup
     if (!reachView_ || region.empty() || views_.size() != 1) return reachTexels_;
-    // A flat region (a floor's footprint) has a box of zero thickness: the body's margin.
+    // A flat region (a floor's footprint) has a box of zero thickness: the body's margin (warpBodyMargin).
     scene::Bounds grown = region;
     grown.min = glm::max(grown.min - reachView_->margin, reachView_->scene.min);
     grown.max = glm::min(grown.max + reachView_->margin, reachView_->scene.max);

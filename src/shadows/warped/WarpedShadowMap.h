@@ -56,7 +56,7 @@ private:
     std::uint64_t fitKey_ = 0;       // what views_ were fitted under: light, resolution, grid, parameters
     float reachTexels_ = -1.0f;      // shadowReachTexels
     // shadowReachTexelsWithin's: the single view's frustum (none with tiles), the scene's box and
-    // the body's margin (makeWarpBody), and what warpedTexelWorld and reachInPlainTexels take.
+    // the body's margin (warpBodyMargin), and what warpedTexelWorld and reachInPlainTexels take.
     struct ReachView {
         glm::mat4 frustum;
         scene::Bounds scene;

@@ -279,10 +279,10 @@ vec3 tintAt(ShadowSite s) {
 #endif
 }
 
-// The tint at a site of the light's plain map, for a lookup whose depth compare reads maps of its
-// own (cascades, warped views): white off the map; a translucent receiver that no other layer's
-// tint reaches (RECEIVER_UNTINTED: the renderer's tint split) gets only its own layers in front,
-// read from no map, as hard's lookup.
+// The tint at a site of the light's plain map (hard's lookup, and those whose depth compare reads
+// maps of their own: cascades, warped views): white off the map; a translucent receiver that no
+// other layer's tint reaches (RECEIVER_UNTINTED: the renderer's tint split) gets only its own
+// layers in front, read from no map.
 vec3 plainMapTint(ShadowSite s, float NdotL) {
     if (!s.inside) return vec3(1.0);
 #if defined(MATERIAL_TRANSLUCENT) && defined(RECEIVER_UNTINTED) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
