@@ -73,7 +73,10 @@ Texture Texture::create2DMultisample(GLenum fmt, int w, int h, int samples) {
                    bytesPerTexel(fmt) * static_cast<std::size_t>(w) * h * samples);
 }
 
-void unbindTextureUnits(GLsizei units) { glBindTextures(0, units, nullptr); }
+void unbindTextureUnits(GLsizei units) {
+    glBindTextures(0, units, nullptr);
+    glUseProgram(0);
+}
 
 Texture Texture::view2D(const Texture& source, GLenum format, int layer, int level) {
     GLuint id = 0;

@@ -42,8 +42,12 @@ private:
     std::size_t bytes_ = 0;
 };
 
-// Unbinds the first `units` texture units. llvmpipe rasterises into a texture several times slower
-// while last frame's textures stay bound for sampling, so shadow passes start with this.
+// Unbinds the first `units` texture units, and the current program, which may sample them. llvmpipe
+// rasterises into a texture several times slower while last frame's textures stay bound for
+// sampling, so shadow passes start with this. NVIDIA's driver checks the current program against
+// the bound textures at the next clear too (a lighting program left current by a frame drawn
+// straight into sRGB, whose shadow samplers then met unbound units: "Program undefined behavior"
+// warnings on an H200).
 void unbindTextureUnits(GLsizei units);
 
 // Bytes per texel of the internal formats this project uses (for memory statistics).

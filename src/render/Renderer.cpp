@@ -381,6 +381,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         timer_.end(Pass::Post);
     }
     if (partial) glDisable(GL_SCISSOR_TEST);
+    // No program of this renderer's stays current: a frame shaded straight into sRGB ends on a
+    // lighting program, whose textures go with the renderer, and a driver may check the current
+    // program at the caller's next clear (see gl::unbindTextureUnits).
+    glUseProgram(0);
     timer_.endFrame();
 }
 

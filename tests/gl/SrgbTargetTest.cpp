@@ -5,6 +5,8 @@
 #include "GlTestSupport.h"
 
 #include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+#include "gpu/ShaderContract.h"
 #include "render/Offscreen.h"
 
 #include <stdexcept>
@@ -132,6 +134,71 @@ TEST(SrgbTargetUse, ATechniqueChangeLeavesTheCallersFramebufferBound) {
     glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
     EXPECT_EQ(static_cast<GLuint>(draw), panel.framebuffer());
     EXPECT_EQ(static_cast<GLuint>(read), panel.framebuffer());
+}
+
+// The current program's shadow samplers (sampler*Shadow) whose units hold no depth texture with
+// comparison on, as "name[i] (unit u)": what NVIDIA's driver warns of at a draw or clear.
+std::vector<std::string> shadowSamplersWithoutDepth() {
+    GLint program = 0, uniforms = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    if (program == 0) return {};
+    const auto id = static_cast<GLuint>(program);
+    glGetProgramiv(id, GL_ACTIVE_UNIFORMS, &uniforms);
+    std::vector<std::string> wrong;
+    for (GLuint i = 0; i < static_cast<GLuint>(uniforms); ++i) {
+        char name[256];
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(id, i, sizeof name, nullptr, &size, &type, name);
+        const GLenum binding = type == GL_SAMPLER_2D_SHADOW         ? GL_TEXTURE_BINDING_2D
+                               : type == GL_SAMPLER_CUBE_SHADOW     ? GL_TEXTURE_BINDING_CUBE_MAP
+                               : type == GL_SAMPLER_2D_ARRAY_SHADOW ? GL_TEXTURE_BINDING_2D_ARRAY
+                                                                    : GL_NONE;
+        if (binding == GL_NONE) continue;
+        std::string base(name);
+        if (base.size() > 3 && base.ends_with("[0]")) base.resize(base.size() - 3);
+        for (GLint k = 0; k < size; ++k) {
+            const std::string element = size > 1 ? base + "[" + std::to_string(k) + "]" : base;
+            GLint unit = 0, texture = 0, format = 0, mode = GL_NONE;
+            glGetUniformiv(id, glGetUniformLocation(id, element.c_str()), &unit);
+            glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+            glGetIntegerv(binding, &texture);
+            glActiveTexture(GL_TEXTURE0);
+            if (texture != 0) {
+                glGetTextureLevelParameteriv(static_cast<GLuint>(texture), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+                glGetTextureParameteriv(static_cast<GLuint>(texture), GL_TEXTURE_COMPARE_MODE, &mode);
+            }
+            const bool depth = format == GL_DEPTH_COMPONENT32F || format == GL_DEPTH_COMPONENT24 || format == GL_DEPTH_COMPONENT16;
+            if (!depth || mode != GL_COMPARE_REF_TO_TEXTURE) wrong.push_back(element + " (unit " + std::to_string(unit) + ")");
+        }
+    }
+    return wrong;
+}
+
+// A frame shaded straight into sRGB ends on a lighting program (the blit that finishes it uses
+// none). The next frame's shadow passes unbind the lighting units and clear their maps, and a
+// renderer that goes deletes its textures before the caller's next clear. A driver that checks the
+// current program at a clear (NVIDIA's, on an H200) then met shadow samplers over empty units.
+// Neither may leave a program current that samples what they took away.
+TEST(SrgbTargetUse, NoProgramIsLeftSamplingTheShadowUnitsAFrameOrARendererTookAway) {
+    scene::Scene s = fogAndPanes();
+    for (const bool floatTarget : {false, true})
+        for (const char* technique : {"hard", "cssm2", "pcss", "cascaded"}) {
+            const std::string what = std::string(technique) + (floatTarget ? ", float target" : ", sRGB");
+            {
+                render::Renderer renderer(s, options(technique, floatTarget));
+                render::OffscreenTarget target(32, 32);
+                renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+                gl::unbindTextureUnits(gpu::kLightingUnits);  // as each shadow pass begins
+                auto wrong = shadowSamplersWithoutDepth();
+                EXPECT_TRUE(wrong.empty()) << what << ", the shadow passes: " << wrong.size() << " shadow samplers over unbound units, first "
+                                           << (wrong.empty() ? "" : wrong.front());
+                renderer.render(0.0f, s.camera, 32, 32, target.framebuffer());
+            }
+            const auto wrong = shadowSamplersWithoutDepth();
+            EXPECT_TRUE(wrong.empty()) << what << ", the renderer gone: " << wrong.size() << " shadow samplers over unbound units, first "
+                                       << (wrong.empty() ? "" : wrong.front());
+        }
 }
 
 }  // namespace
