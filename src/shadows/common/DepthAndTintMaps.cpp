@@ -224,9 +224,10 @@ void DepthAndTintMaps::setFiltering(GLenum filter) {
 }
 
 glm::vec2 DepthAndTintMaps::translucentTestOffset(const Light& light) {
-    // Eight units, not one: two triangles of one plane (the floor, a block's bottom face) rasterise
-    // depths that differ by more than a unit (measured on scenes/glass.json: with one the floor
-    // under the glass block still took its bottom face's tint; eight and 64 gave the same pictures).
+    // Eight units more: two triangles of one plane (the floor, a block's bottom face) rasterise
+    // depths that differ by more than a unit, and the shader's slope (dFdx, dFdy of the float
+    // depth) may fall short of the driver's by rounding. over_opaque.glsl takes a unit at its
+    // largest (2^-23), which bounds every driver's r for depths below 1.
     constexpr float kMoreUnits = 8.0f;
     return light.shadow.polygonOffset + glm::vec2(0.0f, kMoreUnits);
 }

@@ -8,14 +8,20 @@ uniform vec2 uTestOffset;  // (factor, units)
 // The tested depth only grows: a GPU may still reject fragments early by their own depth.
 layout(depth_greater) out float gl_FragDepth;
 
+// GL 4.5 §14.6.5: o = m factor + r units, m the depth slope (the larger of |dz/dx|, |dz/dy|, or
+// their Euclidean norm: |dz/dx| + |dz/dy| bounds both), r the 32-bit float depth's step at "the
+// maximum z in the primitive", 2^(e - 23). A fragment cannot know its primitive's largest z, so r
+// is taken at its largest, 2^-23: z below 1 has e <= -1, and NVIDIA's unit is twice the step
+// (measured on an H200, OverOpaqueTest). Where z is small and the opaque triangle reaches deep (a
+// floor under a sun), r at the fragment's own z fell short of the driver's by 16x or more: the
+// floor under a glass block took its bottom face's tint a second time. 10 units of 2^-23 are
+// 1.2e-6 of the light's depth range, far below anything a scene models.
+const float kLargestDepthStep = 1.0 / 8388608.0;  // 2^-23
+
 void testBehindOpaqueOffset() {
     float z = gl_FragCoord.z;
-    // GL 4.5 §14.6.5: o = m factor + r units, m the depth slope (the larger of |dz/dx|, |dz/dy|,
-    // or their Euclidean norm: |dz/dx| + |dz/dy| bounds both), r the 32-bit float depth's step
-    // at z, 2^(e - 23).
     float m = abs(dFdx(z)) + abs(dFdy(z));
-    float r = uintBitsToFloat((floatBitsToUint(max(z, 1e-30)) & 0x7f800000u) - (23u << 23));  // z's exponent, 23 less
     // Kept below the far plane's 1 (the largest float below it): a steep face (m large) over no
     // opaque caster still draws. Never below z (depth_greater).
-    gl_FragDepth = max(z, min(z + uTestOffset.x * m + uTestOffset.y * r, 0.99999994));
+    gl_FragDepth = max(z, min(z + uTestOffset.x * m + uTestOffset.y * kLargestDepthStep, 0.99999994));
 }
