@@ -137,6 +137,9 @@ void printTable(const std::vector<bench::CaseResult>& results) {
                     r.sceneName.c_str(), r.frameMs.mean, r.frameMs.p95, r.fpsMean, r.gpuFrameMs.median, r.passMs[0].median,
                     r.passMs[1].median, r.passMs[2].median, static_cast<double>(r.shadowMemoryBytes) / 1048576.0,
                     r.shadowTrianglesPerFrame);
+        if (r.glErrors > 0 || r.glWarnings > 0)
+            std::printf("    GL errors %d, driver warnings %d while it ran: its times include the driver's checks and their logging\n", r.glErrors,
+                        r.glWarnings);
         if (r.calibrated)
             for (int p = 0; p < render::kPassCount; ++p) {
                 const auto& cal = r.calibration[static_cast<std::size_t>(p)];

@@ -146,6 +146,7 @@ std::unique_ptr<Engine> makeEngine(scene::Scene& scene, const BenchCase& c, cons
 CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings,
                    const std::function<void(double)>& progress) {
     gl::resetDebugErrorCount();
+    const int warningsBefore = gl::debugWarningCount();
     std::unique_ptr<Engine> engine = makeEngine(scene, c, settings);
     const int w = settings.width, h = settings.height;
     FramePacer pacer;
@@ -267,6 +268,7 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
         r.image = render::readFramebufferRgba8(engine->framebuffer(), w, h);
     }
     r.glErrors = gl::debugErrorCount();
+    r.glWarnings = gl::debugWarningCount() - warningsBefore;
     progress(1.0);
     return r;
 }

@@ -73,6 +73,7 @@ struct CaseResult {
     std::array<PassCalibration, render::kPassCount> calibration;
     shadows::ParameterValues parameters;  // every parameter of the technique as it ran
     int glErrors = 0;
+    int glWarnings = 0;  // driver warnings while the case ran (its frames paid for their callbacks)
     int width = 0, height = 0;
     std::vector<std::uint8_t> image;  // RGBA8, top row first (empty unless settings.images)
     // Every measured sample: wall frame ms, and GPU ms per pass.

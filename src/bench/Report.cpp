@@ -179,6 +179,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
             {"warmup", {{"frames", r.warmupFrames}, {"seconds", r.warmupSeconds}, {"settled", r.settled}}},
             {"calibration", r.calibrated ? calibration : json(nullptr)},
             {"gl_errors", r.glErrors},
+            {"gl_warnings", r.glWarnings},
             {"image", r.image.empty() ? json(nullptr) : json(imageName(i, r))},
             {"samples", {{"frame_ms", r.frameSamples}, {"pass_gpu_ms", samples}}},
         };

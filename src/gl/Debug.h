@@ -12,8 +12,10 @@ void resetDebugErrorCount();
 // Driver messages of medium or high severity that are not errors (undefined behaviour,
 // deprecated or non-portable use, ...); performance hints are not counted.
 int debugWarningCount();
-// Called for each counted error or warning (tests turn them into failures).
-void setDebugMessageHook(void (*hook)(const char* message));
+// Called for each counted error or warning (tests turn them into failures); returns the hook it
+// replaces. The log shows each distinct message its first few times only; the hook sees them all.
+using DebugMessageHook = void (*)(const char* message);
+DebugMessageHook setDebugMessageHook(DebugMessageHook hook);
 // Checks glGetError and throws std::runtime_error naming `where` if one is pending.
 void checkError(const char* where);
 

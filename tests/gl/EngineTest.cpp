@@ -386,6 +386,24 @@ TEST(BadInput, ZeroSizedFrameIsSkipped) {
     EXPECT_EQ(gl::debugErrorCount(), 0);
 }
 
+// A driver repeats a warning every frame while its cause lasts: the log shows it three times and
+// says the rest are counted; the count and the hook (tests' failures) see every one.
+TEST(DriverMessages, ARepeatedMessageIsLoggedThreeTimesAndCountedEveryTime) {
+    const gl::DebugMessageHook tests = gl::setDebugMessageHook(nullptr);
+    const int before = gl::debugWarningCount();
+    const std::string text = "penumbra test: the same driver message, again";
+    ::testing::internal::CaptureStderr();
+    for (int i = 0; i < 10; ++i)
+        glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_PORTABILITY, 7, GL_DEBUG_SEVERITY_MEDIUM, -1, text.c_str());
+    const std::string logged = ::testing::internal::GetCapturedStderr();
+    gl::setDebugMessageHook(tests);
+    std::size_t shown = 0;
+    for (std::size_t at = logged.find(text); at != std::string::npos; at = logged.find(text, at + 1)) ++shown;
+    EXPECT_EQ(shown, 3u) << logged;
+    EXPECT_NE(logged.find("further repeats are counted"), std::string::npos) << logged;
+    EXPECT_EQ(gl::debugWarningCount() - before, 10);
+}
+
 TEST(BadInput, UnknownTechniqueListsTheKnownOnes) {
     scene::Scene s = sceneFromJson(R"({ "objects": [ { "shape": "box" } ] })");
     render::Renderer renderer(s);
