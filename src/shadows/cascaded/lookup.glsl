@@ -57,7 +57,9 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // Blend into the next cascade over the last uCascadeBlend of this one.
     float start = uCascadeSplits[c + 1] - uCascadeBlend * (uCascadeSplits[c + 1] - uCascadeSplits[c]);
     if (c + 1 < uCascadeCount && depth > start && uCascadeBlend > 0.0)
-        lit = mix(lit, sampleCascade(c + 1, light, P, N, NdotL), (depth - start) / (uCascadeSplits[c + 1] - start));
+        // Clamped: chosen by projection, a point may lie in cascade c's box beyond its split,
+        // where the unclamped weight left [0, 1] and the visibility with it.
+        lit = mix(lit, sampleCascade(c + 1, light, P, N, NdotL), clamp((depth - start) / (uCascadeSplits[c + 1] - start), 0.0, 1.0));
     vec3 result = lit * plainMapTint(site, NdotL);
     return uCascadeDebug != 0 ? result * kCascadeTints[c] : result;
 }
