@@ -7,6 +7,7 @@
 #include "render/Offscreen.h"
 #include "util/Log.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace penumbra::test {
@@ -474,6 +475,47 @@ TEST_P(DebugOutput, EveryLightTypeIsClean) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, DebugOutput, ::testing::ValuesIn(techniqueNames()),
+                         [](const auto& info) { return testNameOf(info.param); });
+
+// Every technique's visibility channel, for each light type, stays within [0, 1]: a weight or a
+// filter that leaves it (cascaded's blend with select=projection once gave -21..22) lights a
+// receiver negatively or over-brightly, and the thresholded tests may not see it. The camera looks
+// down a long floor, so cascades and warped maps are stretched; a pane casts a coloured shadow.
+class VisibilityRange : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(VisibilityRange, EveryLightsVisibilityStaysWithinZeroAndOne) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 2, 6], "target": [0, 0.5, -20], "fov_deg": 60, "far": 80 },
+      "lights": [ { "type": "directional", "direction": [-0.5, -1, 0.3], "shadow": { "resolution": 512 } },
+                  { "type": "spot", "position": [2, 4, 2], "direction": [-0.5, -1, -0.5], "angle_deg": 60, "shadow": { "resolution": 256 } },
+                  { "type": "point", "position": [-2, 3, 1], "shadow": { "resolution": 128 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 60], "position": [0, 0, -20] },
+                   { "shape": "box", "position": [0, 0.5, 0] }, { "shape": "box", "position": [1, 1, -12] },
+                   { "shape": "sphere", "radius": 0.6, "position": [-1.5, 1, -5] },
+                   { "shape": "plane", "size": [1, 1], "position": [1, 1.5, 0], "material": { "transmission": [0.1, 0.9, 0.1] } } ] })");
+    for (int light = 0; light < 3; ++light) {
+        render::RenderOptions options = optionsFor(GetParam());
+        options.output = OutputMode::Visibility;
+        options.debugLight = light;
+        const Frame f = renderFrame(s, options, 96, 64);
+        float lowest = 0.0f, highest = 1.0f;
+        for (std::size_t i = 0; i < f.rgba.size(); ++i)
+            if (i % 4 != 3) {
+                lowest = std::min(lowest, f.rgba[i]);
+                highest = std::max(highest, f.rgba[i]);
+            }
+        EXPECT_GE(lowest, -1e-4f) << GetParam() << ", light " << light;
+        EXPECT_LE(highest, 1.0f + 1e-4f) << GetParam() << ", light " << light;
+    }
+}
+
+static std::vector<std::string> techniquesAndVariants() {
+    std::vector<std::string> names = techniqueNames();
+    names.push_back("cascaded:select=projection");
+    return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, VisibilityRange, ::testing::ValuesIn(techniquesAndVariants()),
                          [](const auto& info) { return testNameOf(info.param); });
 
 // The overlay shows each light's screen mask (a layer of one R8 array; ScreenShadowMask keeps no
