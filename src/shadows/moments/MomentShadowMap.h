@@ -55,6 +55,8 @@ private:
         gl::Framebuffer multisampledTarget;
     };
     GLenum format() const;
+    // c+ and c- as the maps store them: the parameters, within what half floats hold with fp16.
+    glm::vec2 exponents() const;
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
     // The depth texels of face `face` whose moments must be made again this frame (all of them
     // when nothing was kept).
