@@ -79,7 +79,7 @@ GLenum MomentShadowMap::format() const {
 
 // Half floats hold at most 65504 = e^11.09. ESM stores e^{c x} and EVSM e^{2 c x} (the square),
 // x in [-1, 1], so with fp16 c is at most 10 and 5.54 (MJP's "Shadows" sample uses 5.54 for 16-bit
-// EVSM too). Unclamped (c = 80 and 40), the default scene's score with fp16 was 0.50 RMSE, 28 %
+// EVSM too). Unclamped (c = 80 and 40), the default scene's score (320 x 180) with fp16 was 0.50 RMSE, 28 %
 // wrong (esm) and 0.34 / 13 % (evsm2, evsm4), against 0.057 / 1.2 % and 0.052 / 1.2 % in fp32.
 glm::vec2 MomentShadowMap::exponents() const {
     if (!fp16_) return {positiveExponent_, negativeExponent_};
