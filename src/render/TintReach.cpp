@@ -142,16 +142,25 @@ scene::Bounds insideAll(const OrientedBox& oriented, std::span<const Plane> plan
     return scene::Bounds{glm::max(out.min, receiver.min), glm::min(out.max, receiver.max)};  // rounding of the cuts
 }
 
+// A convex hull of at most N points, held in place: the footprints run per caster and light each
+// frame, and keep off the heap as Polygon does.
+template <std::size_t N>
+struct Hull {
+    std::array<glm::vec2, 2 * N> v;  // the monotone chain's working room
+    std::size_t n = 0;
+};
+
 // The convex hull of `points`, counter-clockwise, without points within `tolerance` of a side
 // (Andrew's monotone chain); fewer than 3 points where they lie on a line.
 template <std::size_t N>
-std::vector<glm::vec2> convexHull(std::array<glm::vec2, N> points, float tolerance) {
+Hull<N> convexHull(std::array<glm::vec2, N> points, float tolerance) {
     std::sort(points.begin(), points.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     const auto turnsLeft = [tolerance](const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
         const glm::vec2 e = a - o, f = b - o;
         return e.x * f.y - e.y * f.x > tolerance * glm::length(f - e);
     };
-    std::vector<glm::vec2> hull(2 * N);
+    Hull<N> out;
+    auto& hull = out.v;
     std::size_t k = 0;
     for (std::size_t i = 0; i < N; ++i) {  // lower chain
         while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
@@ -161,8 +170,8 @@ std::vector<glm::vec2> convexHull(std::array<glm::vec2, N> points, float toleran
         while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
         hull[k++] = points[i];
     }
-    hull.resize(k > 1 ? k - 1 : k);  // the last point is the first
-    return hull;
+    out.n = k > 1 ? k - 1 : k;  // the last point is the first
+    return out;
 }
 
 // The shadow volume of a caster with corners `caster`, padded by `padTexels`: up to five planes
@@ -191,11 +200,11 @@ bool shadowVolume(const gpu::LightData& light, const OrientedBox::Corners& caste
             lo = glm::min(lo, q[i]);
             hi = glm::max(hi, q[i]);
         }
-        const std::vector<glm::vec2> hull = convexHull(q, 1e-6f * std::max(hi.x - lo.x, hi.y - lo.y));
-        if (hull.size() >= 3 && hull.size() <= 6) {
+        const auto hull = convexHull(q, 1e-6f * std::max(hi.x - lo.x, hi.y - lo.y));
+        if (hull.n >= 3 && hull.n <= 6) {
             out.count = 0;
-            for (std::size_t i = 0; i < hull.size(); ++i) {
-                const glm::vec2 a = hull[i], e = hull[(i + 1) % hull.size()] - a;
+            for (std::size_t i = 0; i < hull.n; ++i) {
+                const glm::vec2 a = hull.v[i], e = hull.v[(i + 1) % hull.n] - a;
                 const glm::vec2 outward = glm::normalize(glm::vec2(e.y, -e.x));  // counter-clockwise hull
                 const glm::vec3 n = outward.x * u + outward.y * v;
                 out.planes[static_cast<std::size_t>(out.count++)] = Plane{-n, glm::dot(outward, a) + pad};
