@@ -20,7 +20,7 @@ static DebugMessageHook g_hook = nullptr;
 // stays readable and printing it does not slow the frames being timed.
 static constexpr int kLoggedRepeats = 3;
 
-static void logOnce(const std::string& text) {
+static void logFirstTimes(const std::string& text) {
     static std::mutex mutex;
     static std::map<std::string, int> seen;
     const std::lock_guard<std::mutex> lock(mutex);
@@ -37,13 +37,13 @@ static void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum s
     if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     if (type == GL_DEBUG_TYPE_ERROR) {
         ++g_errors;
-        logOnce(log::format("error: {}", message));
+        logFirstTimes(log::format("error: {}", message));
         if (g_hook) g_hook(message);
         return;
     }
     if (type == GL_DEBUG_TYPE_PERFORMANCE || severity == GL_DEBUG_SEVERITY_LOW) return;
     ++g_warnings;
-    logOnce(message);
+    logFirstTimes(message);
     if (g_hook) g_hook(message);
 }
 
