@@ -15,10 +15,73 @@ TEST(Adjacency, BoxAndSphereAreClosedAPlaneHasFourBorderEdges) {
     EXPECT_EQ(box.positions.size(), 8u) << "the box's 24 vertices (split normals) weld to 8 corners";
     EXPECT_EQ(box.indices.size(), 12u * 6u);
     const AdjacencyMesh sphere = buildAdjacency(scene::shapes::sphere(0.5f));
-    EXPECT_TRUE(sphere.closed()) << sphere.boundaryEdges << " border, " << sphere.nonManifoldEdges << " non-manifold edges";
+    EXPECT_TRUE(sphere.closed()) << sphere.total().boundary << " border, " << sphere.total().nonManifold << " non-manifold edges";
     const AdjacencyMesh plane = buildAdjacency(scene::shapes::plane(2.0f, 2.0f));
-    EXPECT_EQ(plane.boundaryEdges, 4u);
+    EXPECT_EQ(plane.total().boundary, 4u);
     EXPECT_FALSE(plane.closed());
+}
+
+// Every neighbour relation goes both ways: if triangle t's edge (a, b) has n as its neighbour's
+// corner, the triangle (a, b, n) has t's opposite corner on that edge. The geometry shader's
+// invocations for t and for it then agree whether the edge is a silhouette. Returns the number
+// of edges with a partner.
+std::size_t expectSymmetricPairs(const AdjacencyMesh& m) {
+    auto own = [&](std::size_t t, int e) { return m.indices[t + static_cast<std::size_t>(e + 4) % 6]; };
+    std::size_t paired = 0;
+    for (std::size_t t = 0; t < m.indices.size(); t += 6)
+        for (int e = 0; e < 6; e += 2) {
+            const std::uint32_t a = m.indices[t + static_cast<std::size_t>(e)], b = m.indices[t + static_cast<std::size_t>(e + 2) % 6];
+            const std::uint32_t n = m.indices[t + static_cast<std::size_t>(e) + 1];
+            if (n == own(t, e)) continue;  // no partner: a border, the odd one of a fan
+            ++paired;
+            int partners = 0;
+            for (std::size_t u = 0; u < m.indices.size(); u += 6)
+                for (int f = 0; f < 6 && u != t; f += 2) {
+                    const std::uint32_t c = m.indices[u + static_cast<std::size_t>(f)], d = m.indices[u + static_cast<std::size_t>(f + 2) % 6];
+                    const bool sameEdge = (c == a && d == b) || (c == b && d == a);
+                    if (sameEdge && own(u, f) == n && m.indices[u + static_cast<std::size_t>(f) + 1] == own(t, e)) ++partners;
+                }
+            EXPECT_EQ(partners, 1) << "triangle " << t / 6 << " edge " << e / 2;
+        }
+    return paired;
+}
+
+TEST(Adjacency, TrianglesArePairedOnEachEdgeWhicheverWayTheyRunIt) {
+    scene::Mesh box = scene::shapes::box(glm::vec3(1.0f));
+    std::swap(box.indices[1], box.indices[2]);  // the first triangle wound against its neighbours
+    const AdjacencyMesh misWound = buildAdjacency(box);
+    EXPECT_EQ(misWound.total().misoriented, 3u);
+    EXPECT_EQ(misWound.total().boundary, 0u);
+    EXPECT_FALSE(misWound.closed()) << "it needs both sides";
+    EXPECT_EQ(expectSymmetricPairs(misWound), 36u) << "every edge of the 12 triangles still has its partner";
+
+    // Four triangles on the edge (0, 1), as two double-sided quads crossing there: two pairs.
+    scene::Mesh fan;
+    for (const glm::vec3 p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0.5f, 1, 0), glm::vec3(0.5f, -1, 0),
+                              glm::vec3(0.5f, 0, 1), glm::vec3(0.5f, 0, -1)})
+        fan.vertices.push_back({.position = p});
+    fan.indices = {0, 1, 2, 0, 1, 3, 1, 0, 4, 1, 0, 5};
+    fan.parts.push_back({.firstIndex = 0, .indexCount = 12});
+    const AdjacencyMesh four = buildAdjacency(fan);
+    EXPECT_EQ(four.total().nonManifold, 1u);
+    EXPECT_EQ(four.total().boundary, 8u);
+    EXPECT_EQ(expectSymmetricPairs(four), 4u) << "the shared edge's four triangles, in two pairs";
+}
+
+TEST(Adjacency, PartsArePairedEachOnItsOwn) {
+    // A box whose top and bottom are a second part (another material): drawn or left out on
+    // their own, so no triangle leans on a neighbour of the other part.
+    scene::Mesh box = scene::shapes::box(glm::vec3(1.0f));
+    ASSERT_EQ(box.parts.size(), 1u);
+    box.parts = {{.firstIndex = 0, .indexCount = 18}, {.firstIndex = 18, .indexCount = 18}};
+    const AdjacencyMesh split = buildAdjacency(box);
+    ASSERT_EQ(split.parts.size(), 2u);
+    EXPECT_FALSE(split.parts[0].closed());
+    EXPECT_FALSE(split.parts[1].closed());
+    EXPECT_EQ(split.parts[0].boundary + split.parts[1].boundary, 2u * split.parts[0].boundary);
+    EXPECT_GT(split.parts[0].boundary, 0u);
+    EXPECT_TRUE(buildAdjacency(scene::shapes::box(glm::vec3(1.0f))).parts[0].closed());
+    expectSymmetricPairs(split);
 }
 
 TEST(Adjacency, NeighboursShareTheEdgeTheOtherWay) {

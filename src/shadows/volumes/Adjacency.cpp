@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 
 namespace penumbra::shadows {
@@ -31,6 +30,19 @@ PositionKey keyOf(const glm::vec3& p, float weld) {
 
 }  // namespace
 
+EdgeCounts& EdgeCounts::operator+=(const EdgeCounts& o) {
+    boundary += o.boundary;
+    nonManifold += o.nonManifold;
+    misoriented += o.misoriented;
+    return *this;
+}
+
+EdgeCounts AdjacencyMesh::total() const {
+    EdgeCounts sum;
+    for (const auto& p : parts) sum += p;
+    return sum;
+}
+
 AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
     AdjacencyMesh out;
     std::unordered_map<PositionKey, std::uint32_t, PositionHash> welded;
@@ -45,32 +57,43 @@ AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
     }
     const std::size_t triangles = mesh.indices.size() / 3;
     auto corner = [&](std::size_t t, int k) { return remap[mesh.indices[3 * t + static_cast<std::size_t>(k)]]; };
-    // Directed edge (a -> b) -> the vertex opposite it in its triangle; several for non-manifold edges.
-    std::multimap<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> opposite;
     // Triangles that weld to a line or a point (sphere poles) have no area and no edges.
     auto degenerate = [&](std::size_t t) { return corner(t, 0) == corner(t, 1) || corner(t, 1) == corner(t, 2) || corner(t, 0) == corner(t, 2); };
-    for (std::size_t t = 0; t < triangles; ++t)
-        for (int k = 0; k < 3 && !degenerate(t); ++k) opposite.emplace(std::make_pair(corner(t, k), corner(t, (k + 1) % 3)), corner(t, (k + 2) % 3));
-    out.indices.reserve(triangles * 6);
-    for (std::size_t t = 0; t < triangles; ++t)
+    // Each triangle's edge k starts the 6-index group's slot 2k; slot 2k + 1 is the neighbour's
+    // opposite vertex, the triangle's own until a partner is found.
+    out.indices.resize(triangles * 6);
+    for (std::size_t t = 0; t < triangles; ++t)  // degenerate ones keep their slots; the shader skips them
         for (int k = 0; k < 3; ++k) {
-            if (degenerate(t)) {  // kept for the index layout; it never faces the light
-                out.indices.push_back(corner(t, k));
-                out.indices.push_back(corner(t, k));
-                continue;
-            }
-            const std::uint32_t a = corner(t, k), b = corner(t, (k + 1) % 3), own = corner(t, (k + 2) % 3);
-            // A consistently wound neighbour runs the edge the other way (b -> a).
-            const auto range = opposite.equal_range({b, a});
-            const std::size_t sharing = static_cast<std::size_t>(std::distance(range.first, range.second)) +
-                                        opposite.count({a, b}) - 1;  // other triangles on this edge, either way
-            std::uint32_t neighbour = own;
-            if (range.first != range.second) neighbour = range.first->second;
-            if (sharing == 0) ++out.boundaryEdges;
-            else if (sharing > 1 || range.first == range.second) ++out.nonManifoldEdges;  // or wound against us
-            out.indices.push_back(a);
-            out.indices.push_back(neighbour);
+            out.indices[6 * t + 2 * static_cast<std::size_t>(k)] = corner(t, k);
+            out.indices[6 * t + 2 * static_cast<std::size_t>(k) + 1] = corner(t, (k + 2) % 3);
         }
+    struct Side {
+        std::size_t triangle;
+        int edge;
+    };
+    auto pairOff = [&](std::size_t first, std::size_t end) {
+        EdgeCounts counts;
+        std::unordered_map<std::uint64_t, std::vector<Side>> edges;  // undirected edge -> its triangles, in mesh order
+        for (std::size_t t = first; t < end; ++t)
+            for (int k = 0; k < 3 && !degenerate(t); ++k) {
+                const std::uint32_t a = corner(t, k), b = corner(t, (k + 1) % 3);
+                edges[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)].push_back({t, k});
+            }
+        for (const auto& [key, sides] : edges) {
+            counts.boundary += sides.size() == 1;
+            counts.nonManifold += sides.size() > 2;
+            for (std::size_t i = 0; i + 1 < sides.size(); i += 2) {
+                const Side p = sides[i], q = sides[i + 1];
+                out.indices[6 * p.triangle + 2 * static_cast<std::size_t>(p.edge) + 1] = corner(q.triangle, (q.edge + 2) % 3);
+                out.indices[6 * q.triangle + 2 * static_cast<std::size_t>(q.edge) + 1] = corner(p.triangle, (p.edge + 2) % 3);
+                counts.misoriented += sides.size() == 2 && corner(p.triangle, p.edge) == corner(q.triangle, q.edge);
+            }
+        }
+        return counts;
+    };
+    if (mesh.parts.empty()) out.parts.push_back(pairOff(0, triangles));
+    for (const auto& part : mesh.parts)
+        out.parts.push_back(pairOff(part.firstIndex / 3, std::min<std::size_t>((part.firstIndex + part.indexCount) / 3, triangles)));
     return out;
 }
 

@@ -9,14 +9,31 @@
 
 namespace penumbra::shadows {
 
+// How a set of triangles' edges are shared.
+struct EdgeCounts {
+    std::size_t boundary = 0;     // one triangle: a hole or a border
+    std::size_t nonManifold = 0;  // more than two triangles
+    std::size_t misoriented = 0;  // two triangles that run it the same way (inconsistent winding)
+    // Closed and consistently wound: the volume of the triangles facing the light is the
+    // object's. Anything else needs every triangle's volume (both sides).
+    bool closed() const { return boundary == 0 && nonManifold == 0 && misoriented == 0; }
+    EdgeCounts& operator+=(const EdgeCounts& o);
+};
+
 struct AdjacencyMesh {
     std::vector<glm::vec3> positions;  // welded: one per distinct position
     std::vector<std::uint32_t> indices;  // 6 per triangle, in the mesh's triangle order
-    // Edges with one triangle (a hole, a border) and with more than two. A boundary edge gets the
-    // triangle's own opposite vertex as neighbour: a reversed copy of the triangle, so it is a
-    // silhouette whenever the triangle faces the light.
-    std::size_t boundaryEdges = 0, nonManifoldEdges = 0;
-    bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
+    // Per mesh part. Triangles are paired only within their part: a part is drawn or left out
+    // on its own (glass casts through the tint maps instead), and a triangle whose partner is
+    // not drawn would leave its volume open. On each edge the part's triangles are paired off
+    // in mesh order, whichever way each runs it, and each is the other's neighbour: the
+    // pairing is symmetric, which is what lets the geometry shader's two invocations agree
+    // whether the edge is a silhouette. A triangle left without a partner (a border, the odd one
+    // of a fan) gets its own opposite vertex: a reversed copy of itself, so that edge is always
+    // a side of its volume.
+    std::vector<EdgeCounts> parts;
+    EdgeCounts total() const;
+    bool closed() const { return total().closed(); }
 };
 
 AdjacencyMesh buildAdjacency(const scene::Mesh& mesh);

@@ -4,6 +4,8 @@
 #include "gl/PassState.h"
 #include "util/Log.h"
 
+#include <map>
+
 namespace penumbra::shadows {
 
 ShadowVolumes::ShadowVolumes() {
@@ -18,27 +20,44 @@ std::size_t ShadowVolumes::memoryBytes() const {
     return bytes;
 }
 
-// Adjacency for every mesh, once per scene; open casters are reported by name.
+namespace {
+
+// Not a fault: such meshes shadow right, at up to twice the volume fill of a closed one.
+void logBothSided(const std::map<std::string, int>& open, std::size_t meshCount) {
+    if (open.empty()) return;
+    std::string list;
+    std::size_t meshes = 0;
+    for (const auto& [mesh, count] : open) {
+        meshes += static_cast<std::size_t>(count);
+        list += (list.empty() ? "" : "; ") + mesh + (count > 1 ? log::format(" x{}", count) : std::string());
+    }
+    log::info("shadow volumes: {} of {} meshes are open, non-manifold or not consistently wound, and cast from both sides of "
+              "every triangle: {}", meshes, meshCount, list);
+}
+
+}  // namespace
+
+// Adjacency for every mesh, once per scene; the meshes that need both sides are listed.
 void ShadowVolumes::upload(const ShadowFrame& frame) {
     if (uploaded_ == frame.scene) return;
     uploaded_ = frame.scene;
     meshes_.clear();
+    std::map<std::string, int> open;  // "name (its edges)" of the meshes that cast from both sides -> how many
     for (const auto& mesh : frame.scene->meshes) {
         const AdjacencyMesh adj = buildAdjacency(mesh);
         GpuAdjacency g{gl::Buffer(std::span<const glm::vec3>(adj.positions)), gl::Buffer(std::span<const std::uint32_t>(adj.indices)),
-                       gl::VertexArray(), adj.closed()};
+                       gl::VertexArray(), {}};
+        for (const EdgeCounts& part : adj.parts) g.partClosed.push_back(part.closed());
         glVertexArrayVertexBuffer(g.vao.id(), 0, g.positions.id(), 0, sizeof(glm::vec3));
         glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
         g.vao.attribute(0, 0, 3, 0);
         meshes_.push_back(std::move(g));
-        if (adj.closed()) continue;
-        for (const auto& obj : frame.scene->objects)
-            if (obj.castsShadow && &frame.scene->meshes[static_cast<std::size_t>(obj.mesh)] == &mesh)
-                log::warn("shadow volumes: '{}' is not a closed mesh ({} border edges, {} shared by more than two triangles "
-                          "or wound inconsistently); its volume is closed along the border, right for the side facing the "
-                          "light only",
-                          obj.name.empty() ? std::string("unnamed object") : obj.name, adj.boundaryEdges, adj.nonManifoldEdges);
+        const EdgeCounts edges = adj.total();
+        if (edges.closed()) continue;
+        ++open[log::format("{} ({} border, {} shared by more than two, {} wound against their neighbour)",
+                           mesh.name.empty() ? std::string("unnamed mesh") : mesh.name, edges.boundary, edges.nonManifold, edges.misoriented)];
     }
+    logBothSided(open, frame.scene->meshes.size());
 }
 
 void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light) {
@@ -56,9 +75,12 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
         if (!obj.castsShadow) continue;
         volumes_.set("uModel", obj.transformAt(frame.time));
         const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj.mesh)];
-        meshes_[static_cast<std::size_t>(obj.mesh)].vao.bind();
-        for (const auto& part : mesh.parts) {
+        const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(obj.mesh)];
+        adjacency.vao.bind();
+        for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
+            const scene::MeshPart& part = mesh.parts[p];
             if (scene.material(obj, part).translucent()) continue;  // tints through the shared maps instead
+            volumes_.set("uBothSides", adjacency.partClosed[p] ? 0 : 1);
             glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(part.indexCount * 2), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * 2 * sizeof(std::uint32_t)));
         }

@@ -11,8 +11,8 @@ namespace penumbra::shadows {
 // Stencil shadow volumes (Crow 1977; z-fail after Carmack / Everitt & Kilgard 2002): silhouette
 // edges found from triangle adjacency in a geometry shader and extruded to infinity, counted
 // per pixel in the stencil buffer, z-pass or z-fail with capped volumes. Exact (per pixel, any
-// light type) for closed meshes; open meshes are warned about, and their volumes closed along
-// the border, which is right for the side facing the light. Translucent casters tint through
+// light type). Open, non-manifold or inconsistently wound parts cast from both sides of every
+// triangle, as the reference sees them, at up to twice the fill. Translucent casters tint through
 // the shared per-light maps and alpha-tested holes are not seen (the volume is the geometry).
 class ShadowVolumes final : public ShadowTechnique {
 public:
@@ -34,7 +34,7 @@ private:
     struct GpuAdjacency {
         gl::Buffer positions, indices;
         gl::VertexArray vao;
-        bool closed = true;
+        std::vector<bool> partClosed;  // per mesh part: closed parts cast from the side facing the light only
     };
     void upload(const ShadowFrame& frame);
     void drawVolumes(const ShadowFrame& frame, const scene::Light& light);

@@ -1,11 +1,20 @@
 #version 450 core
 // Shadow volume of one triangle with its neighbours (Crow 1977): for a triangle facing the
 // light, a side quad on every silhouette edge (the neighbour faces away, or there is none),
-// extruded to infinity (w = 0), and for z-fail the caps: the triangle itself (light cap) and its
-// projection to infinity (dark cap). Faces point out of the volume (counter-clockwise from
-// outside), which is what the stencil's front/back operations count.
+// extruded away from the light, and for z-fail the caps: the triangle itself (light cap) and its
+// projection (dark cap). Faces point out of the volume (counter-clockwise from outside), which
+// is what the stencil's front/back operations count.
+//
+// Open, non-manifold or inconsistently wound meshes (uBothSides = 1): every triangle casts, a
+// triangle facing away taken reversed, as the ray tracer sees a surface from either side. Each
+// triangle's volume is then closed on its own, and the stencil count is how many of them hold
+// the pixel: non-zero is shadow. A side two neighbours share is left out only where their
+// volumes' sides there cancel (they run the edge opposite ways once turned to the light), the
+// way Stich, Wächter and Keller handle non-closed models (GPU Gems 3, ch. 11, "multiplicity").
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
+in int vIndex[];
+uniform int uBothSides;
 uniform mat4 uViewProj;
 uniform vec4 uLight;  // xyz position, w = 1; or the direction light travels, w = 0
 uniform int uCaps;    // 1: emit light and dark caps (z-fail)
@@ -22,7 +31,24 @@ vec4 extruded(vec3 p) {
     return uExtrusion > 0.0 ? vec4(p + normalize(d) * uExtrusion, 1.0) : vec4(d, 0.0);
 }
 
-bool facesLight(vec3 a, vec3 b, vec3 c) { return dot(cross(b - a, c - a), -awayFromLight(a)) > 0.0; }
+vec3 v[6];
+
+// Twice the area corners (i, j, k) of v[] show the light, signed: > 0 when (i, j, k) winds
+// counter-clockwise seen from the light. Taken with the corners in vertex-index order and the
+// permutation's sign applied, so every invocation that meets the same three corners (the
+// triangle's own, and its neighbour's on a shared edge) gets the same number to the bit, with
+// `precise` keeping the compiler from contracting it differently at each call. Invocations that
+// disagreed about a nearly edge-on triangle would leave a side without its twin: a streak. (On
+// llvmpipe, street.json and construction.json score the same without the ordering; it is a
+// guard for drivers that round or fuse differently per call site.)
+float facing(int i, int j, int k) {
+    bool odd = false;
+    if (vIndex[i] > vIndex[j]) { int t = i; i = j; j = t; odd = !odd; }
+    if (vIndex[j] > vIndex[k]) { int t = j; j = k; k = t; odd = !odd; }
+    if (vIndex[i] > vIndex[j]) { int t = i; i = j; j = t; odd = !odd; }
+    precise float f = dot(cross(v[j] - v[i], v[k] - v[i]), -awayFromLight(v[i]));
+    return odd ? -f : f;
+}
 
 void emit(vec4 worldOrDirection) { gl_Position = uViewProj * worldOrDirection; EmitVertex(); }
 
@@ -36,25 +62,32 @@ void emitCap(vec3 world) {
 }
 
 void main() {
-    vec3 v[6];
     for (int i = 0; i < 6; ++i) v[i] = gl_in[i].gl_Position.xyz;
-    if (!facesLight(v[0], v[2], v[4])) return;
+    const float own = facing(0, 2, 4);
+    if (own == 0.0 || (uBothSides == 0 && own < 0.0)) return;  // edge-on, welded flat, or (closed mesh) facing away
+    const bool reversed = own < 0.0;
     for (int e = 0; e < 6; e += 2) {
-        vec3 a = v[e], b = v[(e + 2) % 6], neighbour = v[e + 1];
-        if (facesLight(a, neighbour, b)) continue;  // shared with a lit neighbour: not a silhouette
-        emit(vec4(a, 1.0));
-        emit(extruded(a));
-        emit(vec4(b, 1.0));
-        emit(extruded(b));
+        const int a = e, b = (e + 2) % 6;
+        // The neighbour, wound (a, n, b) as a consistent mesh winds it: facing the light the
+        // same way as this triangle, the two volumes' sides on this edge run opposite ways and
+        // cancel. A border's "neighbour" is this triangle reversed, which never cancels.
+        const float neighbour = facing(a, e + 1, b);
+        if ((neighbour > 0.0 && own > 0.0) || (neighbour < 0.0 && own < 0.0)) continue;
+        const int from = reversed ? b : a, to = reversed ? a : b;
+        emit(vec4(v[from], 1.0));
+        emit(extruded(v[from]));
+        emit(vec4(v[to], 1.0));
+        emit(extruded(v[to]));
         EndPrimitive();
     }
     if (uCaps == 0) return;
+    const int second = reversed ? 4 : 2, third = reversed ? 2 : 4;
     emitCap(v[0]);
-    emitCap(v[2]);
-    emitCap(v[4]);
+    emitCap(v[second]);
+    emitCap(v[third]);
     EndPrimitive();
     emit(extruded(v[0]));
-    emit(extruded(v[4]));
-    emit(extruded(v[2]));
+    emit(extruded(v[third]));
+    emit(extruded(v[second]));
     EndPrimitive();
 }
