@@ -71,6 +71,29 @@ AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
         std::size_t triangle;
         int edge;
     };
+    auto from = [&](const Side& s) { return corner(s.triangle, s.edge); };  // where the triangle starts the edge
+    auto opposite = [&](const Side& s) { return corner(s.triangle, (s.edge + 2) % 3); };
+    auto link = [&](const Side& p, const Side& q) {
+        out.indices[6 * p.triangle + 2 * static_cast<std::size_t>(p.edge) + 1] = opposite(q);
+        out.indices[6 * q.triangle + 2 * static_cast<std::size_t>(q.edge) + 1] = opposite(p);
+    };
+    // Any symmetric pairing is right; the best one lets the most sides cancel. So first pair
+    // triangles that run the edge opposite ways (consistently wound neighbours), then any two;
+    // never a triangle with a copy of itself (the same opposite corner: models made two-sided by
+    // duplicating faces, as the street's trash can is), whose sides never cancel.
+    auto pairEdge = [&](const std::vector<Side>& sides, EdgeCounts& counts) {
+        std::vector<bool> taken(sides.size(), false);
+        for (const bool consistentOnly : {true, false})
+            for (std::size_t i = 0; i < sides.size(); ++i)
+                for (std::size_t j = i + 1; j < sides.size() && !taken[i]; ++j) {
+                    const bool consistent = from(sides[i]) != from(sides[j]);
+                    if (taken[j] || opposite(sides[i]) == opposite(sides[j]) || (consistentOnly && !consistent)) continue;
+                    link(sides[i], sides[j]);
+                    taken[i] = taken[j] = true;
+                    counts.misoriented += !consistent;
+                }
+        counts.boundary += static_cast<std::size_t>(std::count(taken.begin(), taken.end(), false));
+    };
     auto pairOff = [&](std::size_t first, std::size_t end) {
         EdgeCounts counts;
         std::unordered_map<std::uint64_t, std::vector<Side>> edges;  // undirected edge -> its triangles, in mesh order
@@ -80,14 +103,8 @@ AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
                 edges[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)].push_back({t, k});
             }
         for (const auto& [key, sides] : edges) {
-            counts.boundary += sides.size() == 1;
             counts.nonManifold += sides.size() > 2;
-            for (std::size_t i = 0; i + 1 < sides.size(); i += 2) {
-                const Side p = sides[i], q = sides[i + 1];
-                out.indices[6 * p.triangle + 2 * static_cast<std::size_t>(p.edge) + 1] = corner(q.triangle, (q.edge + 2) % 3);
-                out.indices[6 * q.triangle + 2 * static_cast<std::size_t>(q.edge) + 1] = corner(p.triangle, (p.edge + 2) % 3);
-                counts.misoriented += sides.size() == 2 && corner(p.triangle, p.edge) == corner(q.triangle, q.edge);
-            }
+            pairEdge(sides, counts);
         }
         return counts;
     };

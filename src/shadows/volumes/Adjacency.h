@@ -11,9 +11,9 @@ namespace penumbra::shadows {
 
 // How a set of triangles' edges are shared.
 struct EdgeCounts {
-    std::size_t boundary = 0;     // one triangle: a hole or a border
+    std::size_t boundary = 0;     // triangle sides left without a partner: a hole's or a border's, a fan's odd one, a face's copy
     std::size_t nonManifold = 0;  // more than two triangles
-    std::size_t misoriented = 0;  // two triangles that run it the same way (inconsistent winding)
+    std::size_t misoriented = 0;  // pairs that run their edge the same way (inconsistent winding)
     // Closed and consistently wound: the volume of the triangles facing the light is the
     // object's. Anything else needs every triangle's volume (both sides).
     bool closed() const { return boundary == 0 && nonManifold == 0 && misoriented == 0; }
@@ -25,12 +25,12 @@ struct AdjacencyMesh {
     std::vector<std::uint32_t> indices;  // 6 per triangle, in the mesh's triangle order
     // Per mesh part. Triangles are paired only within their part: a part is drawn or left out
     // on its own (glass casts through the tint maps instead), and a triangle whose partner is
-    // not drawn would leave its volume open. On each edge the part's triangles are paired off
-    // in mesh order, whichever way each runs it, and each is the other's neighbour: the
-    // pairing is symmetric, which is what lets the geometry shader's two invocations agree
-    // whether the edge is a silhouette. A triangle left without a partner (a border, the odd one
-    // of a fan) gets its own opposite vertex: a reversed copy of itself, so that edge is always
-    // a side of its volume.
+    // not drawn would leave its volume open. On each edge the part's triangles are paired off,
+    // whichever way each runs it, and each is the other's neighbour: the pairing is symmetric,
+    // which is what lets the geometry shader's two invocations agree whether the edge is a
+    // silhouette. A triangle left without a partner (a border, the odd one of a fan, a copy of
+    // its only neighbour) gets its own opposite vertex: a reversed copy of itself, so that edge
+    // is always a side of its volume.
     std::vector<EdgeCounts> parts;
     EdgeCounts total() const;
     bool closed() const { return total().closed(); }
