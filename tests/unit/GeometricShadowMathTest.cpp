@@ -3,6 +3,9 @@
 #include "scene/Shapes.h"
 #include "shadows/planar/PlanarFit.h"
 #include "shadows/volumes/Adjacency.h"
+#include "shadows/volumes/NearClipVolume.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -111,6 +114,42 @@ TEST(Adjacency, NeighboursShareTheEdgeTheOtherWay) {
                     if (box.indices[u + k] == b && box.indices[u + (k + 2) % 6] == a && box.indices[u + (k + 4) % 6] == n) found = true;
             EXPECT_TRUE(found) << "triangle " << t / 6 << " edge " << e / 2;
         }
+}
+
+scene::Bounds boxAround(const glm::vec3& centre, float half) {
+    scene::Bounds b;
+    b.add(centre - glm::vec3(half));
+    b.add(centre + glm::vec3(half));
+    return b;
+}
+
+// The camera at the origin looks down -z with its near plane at 0.1: only casters between that
+// plane's small rectangle and the light can put the camera in their shadow volume.
+TEST(NearClipVolume, HoldsOnlyWhatLiesBetweenTheNearPlaneAndTheLight) {
+    const glm::mat4 inverseViewProj = glm::inverse(glm::perspective(glm::radians(60.0f), 16.0f / 9.0f, 0.1f, 100.0f) *
+                                                   glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)));
+    scene::Light sun;
+    sun.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 0.2f));  // from above, a little from behind the camera
+    const NearClipVolume underSun(inverseViewProj, sun);
+    EXPECT_TRUE(underSun.mayHold(boxAround({0, 5, -1.1f}, 0.5f))) << "a roof straight towards the sun";
+    EXPECT_FALSE(underSun.mayHold(boxAround({4, 5, -1}, 0.5f))) << "a roof off to the side";
+    EXPECT_FALSE(underSun.mayHold(boxAround({0, -3, -1}, 0.5f))) << "below the camera, away from the sun";
+    EXPECT_FALSE(underSun.mayHold(boxAround({0, 0, -20}, 1.0f))) << "ahead in the view, not towards the sun";
+    EXPECT_FALSE(underSun.mayHold(scene::Bounds{}));
+
+    scene::Light lamp;
+    lamp.type = scene::Light::Type::Point;
+    lamp.position = {0, 10, 0};
+    const NearClipVolume underLamp(inverseViewProj, lamp);
+    EXPECT_TRUE(underLamp.mayHold(boxAround({0, 5, -0.05f}, 0.3f)));
+    EXPECT_FALSE(underLamp.mayHold(boxAround({1, 15, 0}, 0.3f))) << "beyond the lamp its volume points away from the camera";
+    // Conservative: a box that straddles every bounding plane counts as held, even beyond the lamp.
+    EXPECT_TRUE(underLamp.mayHold(boxAround({0, 15, 0}, 0.3f)));
+
+    // The light in the near plane's own plane: the sweep is flat, so everything takes z-fail.
+    scene::Light edgeOn;
+    edgeOn.direction = {1, 0, 0};
+    EXPECT_TRUE(NearClipVolume(inverseViewProj, edgeOn).mayHold(boxAround({0, 0, -50}, 0.1f)));
 }
 
 TEST(PlanarShadow, FlattensOntoThePlaneAlongTheLight) {

@@ -60,11 +60,11 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     logBothSided(open, frame.scene->meshes.size());
 }
 
-void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light) {
+void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light, const NearClipVolume& nearClip, Counting counting) {
     const bool point = light.type != scene::Light::Type::Directional;
     volumes_.set("uLight", point ? glm::vec4(light.position, 1.0f) : glm::vec4(glm::normalize(light.direction), 0.0f));
     volumes_.set("uViewProj", mask_.viewProj());
-    volumes_.set("uCaps", zFail_ ? 1 : 0);
+    volumes_.set("uCaps", counting == kZFail ? 1 : 0);
     // Past every receiver: the scene's diagonal plus the light's distance to the scene.
     const float diagonal = glm::length(frame.sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
@@ -73,8 +73,12 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
     const scene::Scene& scene = *frame.scene;
     for (const auto& obj : scene.objects) {
         if (!obj.castsShadow) continue;
-        volumes_.set("uModel", obj.transformAt(frame.time));
+        const glm::mat4 model = obj.transformAt(frame.time);
         const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj.mesh)];
+        const Counting chosen = counting_ != kAuto ? static_cast<Counting>(counting_)
+                                : nearClip.mayHold(mesh.bounds.transformed(model)) ? kZFail : kZPass;
+        if (chosen != counting) continue;
+        volumes_.set("uModel", model);
         const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(obj.mesh)];
         adjacency.vao.bind();
         for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
@@ -87,6 +91,28 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
     }
 }
 
+namespace {
+
+// Count volume faces per pixel: z-fail counts those behind the visible surface (back +1, front
+// -1), right even where the near plane cuts a volume; z-pass those in front of it (front +1,
+// back -1), which breaks there. The two sums add up in one stencil: each caster's volume
+// counts 1 inside itself either way. Non-zero: in shadow. Depth clamp: the dark cap and the
+// sides reach past the far plane.
+gl::PassState countingState(bool zFail) {
+    gl::PassState counting = gl::PassState::depthOnly();
+    counting.depthWrite = false;
+    counting.colorWrite = glm::bvec4(false);
+    counting.depthClamp = true;
+    counting.stencilTest = true;
+    const gl::StencilFace up = zFail ? gl::StencilFace{.depthFail = GL_INCR_WRAP} : gl::StencilFace{.depthPass = GL_INCR_WRAP};
+    const gl::StencilFace down = zFail ? gl::StencilFace{.depthFail = GL_DECR_WRAP} : gl::StencilFace{.depthPass = GL_DECR_WRAP};
+    counting.stencilBack = zFail ? up : down;
+    counting.stencilFront = zFail ? down : up;
+    return counting;
+}
+
+}  // namespace
+
 void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // coloured tint, and the fallback for glass the pre-pass does not see
     if (!frame.scene || !frame.camera || frame.viewport.x <= 0) return;
@@ -97,22 +123,11 @@ void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
     for (std::size_t i = 0; i < lights.size(); ++i) {
         mask_.beginLight(static_cast<int>(i));
         if (!lights[i].shadow.enabled) continue;
-        // Count volume faces per pixel: z-fail counts those behind the visible surface (back +1,
-        // front -1), robust when the camera sits inside a volume; z-pass those in front of it
-        // (front +1, back -1), which breaks there. Non-zero: in shadow. Depth clamp: the far cap
-        // and the sides reach past the far plane.
-        gl::PassState counting = gl::PassState::depthOnly();
-        counting.depthWrite = false;
-        counting.colorWrite = glm::bvec4(false);
-        counting.depthClamp = true;
-        counting.stencilTest = true;
-        const gl::StencilFace up = zFail_ ? gl::StencilFace{.depthFail = GL_INCR_WRAP} : gl::StencilFace{.depthPass = GL_INCR_WRAP};
-        const gl::StencilFace down = zFail_ ? gl::StencilFace{.depthFail = GL_DECR_WRAP} : gl::StencilFace{.depthPass = GL_DECR_WRAP};
-        counting.stencilBack = zFail_ ? up : down;
-        counting.stencilFront = zFail_ ? down : up;
-        {
-            const gl::ScopedPassState state(counting);
-            drawVolumes(frame, lights[i]);
+        const NearClipVolume nearClip(glm::inverse(mask_.viewProj()), lights[i]);
+        for (const Counting counting : {kZFail, kZPass}) {
+            if (counting_ != kAuto && counting_ != counting) continue;
+            const gl::ScopedPassState state(countingState(counting == kZFail));
+            drawVolumes(frame, lights[i], nearClip, counting);
         }
         mask_.shadowWhereStencilNonZero();
     }

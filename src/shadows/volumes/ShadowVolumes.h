@@ -5,15 +5,17 @@
 #include "shadows/common/DepthAndTintMaps.h"
 #include "shadows/common/ScreenShadowMask.h"
 #include "shadows/volumes/Adjacency.h"
+#include "shadows/volumes/NearClipVolume.h"
 
 namespace penumbra::shadows {
 
 // Stencil shadow volumes (Crow 1977; z-fail after Carmack / Everitt & Kilgard 2002): silhouette
-// edges found from triangle adjacency in a geometry shader and extruded to infinity, counted
-// per pixel in the stencil buffer, z-pass or z-fail with capped volumes. Exact (per pixel, any
-// light type). Open, non-manifold or inconsistently wound parts cast from both sides of every
-// triangle, as the reference sees them, at up to twice the fill. Translucent casters tint through
-// the shared per-light maps and alpha-tested holes are not seen (the volume is the geometry).
+// edges found from triangle adjacency in a geometry shader and extruded away from the light,
+// counted per pixel in the stencil buffer: z-fail with capped volumes for casters whose volume
+// the near plane may cut (NearClipVolume), z-pass for the rest. Exact per pixel, any light type.
+// Open, non-manifold or inconsistently wound parts cast from both sides of every triangle, as
+// the reference sees them, at up to twice the fill. Translucent casters tint through the shared
+// per-light maps and alpha-tested holes are not seen (the volume is the geometry).
 class ShadowVolumes final : public ShadowTechnique {
 public:
     ShadowVolumes();
@@ -26,7 +28,9 @@ public:
 
 protected:
     std::vector<Parameter> declareParameters() override {
-        return {Parameter::flag("zfail", zFail_, "z-fail counting with caps (Carmack's reverse); off: z-pass"),
+        return {Parameter::choice("counting", counting_, {"auto", "zfail", "zpass"},
+                                  "auto: z-pass for casters whose volume cannot reach the near plane, z-fail with caps (Carmack's "
+                                  "reverse) for the rest (Everitt & Kilgard 2002); zfail or zpass: one for every caster"),
                 Parameter::flag("infinite", infinite_, "extrude to infinity (w = 0) instead of just past the scene")};
     }
 
@@ -37,8 +41,11 @@ private:
         std::vector<bool> partClosed;  // per mesh part: closed parts cast from the side facing the light only
     };
     void upload(const ShadowFrame& frame);
-    void drawVolumes(const ShadowFrame& frame, const scene::Light& light);
-    bool zFail_ = true, infinite_ = false;
+    enum Counting { kAuto, kZFail, kZPass };  // the labels' order in declareParameters
+    // Draws the volumes of the casters `counting` (kZFail or kZPass) is chosen for.
+    void drawVolumes(const ShadowFrame& frame, const scene::Light& light, const NearClipVolume& nearClip, Counting counting);
+    int counting_ = kAuto;
+    bool infinite_ = false;
     const scene::Scene* uploaded_ = nullptr;
     std::vector<GpuAdjacency> meshes_;
     gl::Program volumes_;
