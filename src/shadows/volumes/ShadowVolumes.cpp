@@ -69,6 +69,9 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
     const float diagonal = glm::length(frame.sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
     volumes_.set("uExtrusion", infinite_ ? 0.0f : 2.0f * (diagonal + lightDistance));
+    float farAlongLight = -std::numeric_limits<float>::max();
+    for (const glm::vec3& corner : frame.sceneBounds.corners()) farAlongLight = std::max(farAlongLight, glm::dot(glm::normalize(light.direction), corner));
+    volumes_.set("uFarAlongLight", farAlongLight + 0.01f * diagonal);
     volumes_.use();
     const scene::Scene& scene = *frame.scene;
     for (const auto& obj : scene.objects) {

@@ -19,6 +19,7 @@ uniform mat4 uViewProj;
 uniform vec4 uLight;  // xyz position, w = 1; or the direction light travels, w = 0
 uniform int uCaps;    // 1: emit light and dark caps (z-fail)
 uniform float uExtrusion;  // beyond the scene's far side; 0: to infinity (w = 0)
+uniform float uFarAlongLight;  // a sun's: the scene's largest depth along the light, plus a margin
 
 vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz; }
 
@@ -28,7 +29,11 @@ vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz
 // (depth clamp keeps it from the far plane) is exact.
 vec4 extruded(vec3 p) {
     vec3 d = awayFromLight(p);
-    return uExtrusion > 0.0 ? vec4(p + normalize(d) * uExtrusion, 1.0) : vec4(d, 0.0);
+    if (uExtrusion <= 0.0) return vec4(d, 0.0);
+    // A sun's volumes end on one plane across the light past every receiver, so the dark cap,
+    // flat on it, stays out of the scene.
+    if (uLight.w < 0.5) return vec4(p + d * max(uFarAlongLight - dot(d, p), 0.0), 1.0);
+    return vec4(p + normalize(d) * uExtrusion, 1.0);
 }
 
 vec3 v[6];
