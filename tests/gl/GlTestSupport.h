@@ -4,6 +4,7 @@
 #include "render/Renderer.h"
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <functional>
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -23,6 +24,15 @@ struct Frame {
 };
 
 scene::Scene sceneFromJson(const std::string& json);
+
+// The span of visibility values seen, from [0, 1] outwards: a light's visibility never leaves
+// [0, 1] (to 1e-4). Cascades blended past their weights once gave -21..22.
+struct VisibilitySpan {
+    float lowest = 0.0f, highest = 1.0f;
+    void add(float v) { lowest = std::min(lowest, v), highest = std::max(highest, v); }
+    void add(const glm::vec3& v) { add(v.r), add(v.g), add(v.b); }
+    bool withinZeroAndOne() const { return lowest >= -1e-4f && highest <= 1.0f + 1e-4f; }
+};
 
 // A technique's name as a gtest parameter name: only letters, digits and '_' are allowed there
 // ("pcf-bilinear" -> "pcf_bilinear", "cssm2:filter=poisson16" -> "cssm2_filter_poisson16").

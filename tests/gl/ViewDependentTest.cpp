@@ -175,14 +175,11 @@ TEST(ViewDependent, CascadesChosenByDepthOrByBoxLoseNoShadow) {
             reference::Comparison cmp = sweepCase(s, sunAz, sunEl, pitch);
             for (const char* select : {"depth", "projection"}) {
                 const reference::TechniqueScore score = cmp.evaluate("cascaded", 1024, 0, {{"select", select}});
-                float lowest = 0.0f, highest = 1.0f;
+                VisibilitySpan range;
                 for (const auto& perLight : score.visibility)
-                    for (const glm::vec3& v : perLight) {
-                        lowest = std::min({lowest, v.r, v.g, v.b});
-                        highest = std::max({highest, v.r, v.g, v.b});
-                    }
-                EXPECT_GE(lowest, -1e-4f) << "select=" << select << " sun az " << sunAz << " pitch " << pitch;
-                EXPECT_LE(highest, 1.0f + 1e-4f) << "select=" << select << " sun az " << sunAz << " pitch " << pitch;
+                    for (const glm::vec3& v : perLight) range.add(v);
+                EXPECT_TRUE(range.withinZeroAndOne()) << "select=" << select << " sun az " << sunAz << " pitch " << pitch << ": "
+                                                      << range.lowest << " .. " << range.highest;
                 const MaskComparison m = compareShadowMasks(cmp, score);
                 EXPECT_GT(m.expectedOn, 100) << "the scene's shadows are in view";
                 EXPECT_LE(m.mismatchesAwayFromEdges, 12) << "select=" << select << " sun az " << sunAz << " el " << sunEl << " pitch "
