@@ -93,7 +93,7 @@ TEST(ShadowVolumes, OpenAndMisWoundCastersShadowAsTheReferenceSees) {
         for (std::size_t i = 0; i < n; i += 3) quad.indices.insert(quad.indices.end(), {quad.indices[i], quad.indices[i + 2], quad.indices[i + 1]});
         quad.parts[0].indexCount *= 2;
         ASSERT_FALSE(shadows::buildAdjacency(meshOf(3)).closed());
-        ASSERT_GT(shadows::buildAdjacency(quad).total().nonManifold, 0u);
+        ASSERT_GT(shadows::buildAdjacency(quad).edges.nonManifold, 0u);
 
         reference::Comparison cmp(s, 320, 240, 0.0f);
         cmp.traceReference(1, false);
@@ -104,6 +104,33 @@ TEST(ShadowVolumes, OpenAndMisWoundCastersShadowAsTheReferenceSees) {
             EXPECT_LT(score.wrongShare, 0.0005) << light << " " << counting;
         }
         EXPECT_TRUE(log::takeWarnings().empty()) << "an open caster is no fault: it shadows right";
+    }
+}
+
+// A box whose top face is glass (a part of its own, as the car models' windows are): the glass
+// tints through the maps and is left out of the volumes, so the opaque parts must not lean on
+// its triangles across the rim. When they did (one pairing for the whole mesh), the rim's sides
+// went missing and the car on street.json streaked to the screen's edge (5.96 % wrong).
+TEST(ShadowVolumes, AGlassPartLeavesTheRestOfItsMeshClosed) {
+    scene::Scene s = sceneFromJson(R"({ "camera": { "position": [5, 5, 7], "target": [0, 0.5, 0], "fov_deg": 45 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.25] } ],
+      "objects": [ { "name": "ground", "shape": "plane", "size": [16, 16] },
+                   { "name": "glass-topped box", "shape": "box", "size": [1.2, 1, 1.2], "position": [0, 1.2, 0], "rotation_deg": [0, 25, 0] } ] })");
+    scene::Mesh& box = s.meshes[static_cast<std::size_t>(s.objects[1].mesh)];
+    const int opaque = box.parts[0].material;
+    scene::Material glass;
+    glass.transmission = {0.1f, 0.9f, 0.1f};
+    s.materials.push_back(glass);
+    const int green = static_cast<int>(s.materials.size()) - 1;
+    ASSERT_EQ(box.indices.size(), 36u);
+    box.parts = {{.firstIndex = 0, .indexCount = 12, .material = opaque}, {.firstIndex = 12, .indexCount = 6, .material = green},
+                 {.firstIndex = 18, .indexCount = 18, .material = opaque}};  // the +Y face is the third quad
+    reference::Comparison cmp(s, 320, 240, 0.0f);
+    cmp.traceReference(1, false);
+    for (const char* counting : {"auto", "zfail", "zpass"}) {
+        const auto score = cmp.evaluate("shadow-volumes", 1024, 0, {{"counting", counting}});
+        std::printf("glass-topped box (%s): %.4f%% wrong, colour error %.4f\n", counting, 100 * score.wrongShare, score.colourError);
+        EXPECT_LT(score.wrongShare, 0.001) << counting;
     }
 }
 

@@ -37,13 +37,7 @@ EdgeCounts& EdgeCounts::operator+=(const EdgeCounts& o) {
     return *this;
 }
 
-EdgeCounts AdjacencyMesh::total() const {
-    EdgeCounts sum;
-    for (const auto& p : parts) sum += p;
-    return sum;
-}
-
-AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
+AdjacencyMesh buildAdjacency(const scene::Mesh& mesh, const std::vector<bool>& alone) {
     AdjacencyMesh out;
     std::unordered_map<PositionKey, std::uint32_t, PositionHash> welded;
     std::vector<std::uint32_t> remap(mesh.vertices.size());
@@ -94,23 +88,39 @@ AdjacencyMesh buildAdjacency(const scene::Mesh& mesh) {
                 }
         counts.boundary += static_cast<std::size_t>(std::count(taken.begin(), taken.end(), false));
     };
-    auto pairOff = [&](std::size_t first, std::size_t end) {
+    using Triangles = std::pair<std::size_t, std::size_t>;  // [first, end)
+    auto pairOff = [&](const std::vector<Triangles>& ranges) {
         EdgeCounts counts;
         std::unordered_map<std::uint64_t, std::vector<Side>> edges;  // undirected edge -> its triangles, in mesh order
-        for (std::size_t t = first; t < end; ++t)
-            for (int k = 0; k < 3 && !degenerate(t); ++k) {
-                const std::uint32_t a = corner(t, k), b = corner(t, (k + 1) % 3);
-                edges[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)].push_back({t, k});
-            }
+        for (const auto& [first, end] : ranges)
+            for (std::size_t t = first; t < end; ++t)
+                for (int k = 0; k < 3 && !degenerate(t); ++k) {
+                    const std::uint32_t a = corner(t, k), b = corner(t, (k + 1) % 3);
+                    edges[(static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b)].push_back({t, k});
+                }
         for (const auto& [key, sides] : edges) {
             counts.nonManifold += sides.size() > 2;
             pairEdge(sides, counts);
         }
         return counts;
     };
-    if (mesh.parts.empty()) out.parts.push_back(pairOff(0, triangles));
-    for (const auto& part : mesh.parts)
-        out.parts.push_back(pairOff(part.firstIndex / 3, std::min<std::size_t>((part.firstIndex + part.indexCount) / 3, triangles)));
+    if (mesh.parts.empty()) out.edges = pairOff({{0, triangles}});
+    out.parts.resize(mesh.parts.size());
+    std::vector<Triangles> together;
+    std::vector<std::size_t> members;
+    for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
+        const Triangles r{mesh.parts[p].firstIndex / 3, std::min<std::size_t>((mesh.parts[p].firstIndex + mesh.parts[p].indexCount) / 3, triangles)};
+        if (p < alone.size() && alone[p]) {
+            out.parts[p] = pairOff({r});
+            out.edges += out.parts[p];
+        } else {
+            together.push_back(r);
+            members.push_back(p);
+        }
+    }
+    const EdgeCounts shared = together.empty() ? EdgeCounts{} : pairOff(together);
+    for (const std::size_t p : members) out.parts[p] = shared;
+    out.edges += shared;
     return out;
 }
 

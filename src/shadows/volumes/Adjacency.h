@@ -23,19 +23,21 @@ struct EdgeCounts {
 struct AdjacencyMesh {
     std::vector<glm::vec3> positions;  // welded: one per distinct position
     std::vector<std::uint32_t> indices;  // 6 per triangle, in the mesh's triangle order
-    // Per mesh part. Triangles are paired only within their part: a part is drawn or left out
-    // on its own (glass casts through the tint maps instead), and a triangle whose partner is
-    // not drawn would leave its volume open. On each edge the part's triangles are paired off,
+    // On each edge the triangles paired together (buildAdjacency's `alone`) are paired off,
     // whichever way each runs it, and each is the other's neighbour: the pairing is symmetric,
     // which is what lets the geometry shader's two invocations agree whether the edge is a
     // silhouette. A triangle left without a partner (a border, the odd one of a fan, a copy of
     // its only neighbour) gets its own opposite vertex: a reversed copy of itself, so that edge
     // is always a side of its volume.
-    std::vector<EdgeCounts> parts;
-    EdgeCounts total() const;
-    bool closed() const { return total().closed(); }
+    std::vector<EdgeCounts> parts;  // per mesh part: the counts of the triangles it is paired with
+    EdgeCounts edges;               // the whole mesh's
+    bool closed() const { return edges.closed(); }
 };
 
-AdjacencyMesh buildAdjacency(const scene::Mesh& mesh);
+// `alone`: per part, whether it may be left out of a volume while the others are drawn (glass,
+// which tints through the maps instead). Such a part is paired on its own: a triangle whose
+// partner is not drawn would leave its volume open. The other parts are paired together, so a
+// closed mesh of several materials stays closed.
+AdjacencyMesh buildAdjacency(const scene::Mesh& mesh, const std::vector<bool>& alone = {});
 
 }  // namespace penumbra::shadows

@@ -43,8 +43,15 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     uploaded_ = frame.scene;
     meshes_.clear();
     std::map<std::string, int> open;  // "name (its edges)" of the meshes that cast from both sides -> how many
-    for (const auto& mesh : frame.scene->meshes) {
-        const AdjacencyMesh adj = buildAdjacency(mesh);
+    const scene::Scene& scene = *frame.scene;
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const scene::Mesh& mesh = scene.meshes[m];
+        // Parts some object leaves out of its volumes (glass) are paired on their own.
+        std::vector<bool> alone(mesh.parts.size(), false);
+        for (const auto& obj : scene.objects)
+            for (std::size_t p = 0; obj.castsShadow && static_cast<std::size_t>(obj.mesh) == m && p < alone.size(); ++p)
+                alone[p] = alone[p] || scene.material(obj, mesh.parts[p]).translucent();
+        const AdjacencyMesh adj = buildAdjacency(mesh, alone);
         GpuAdjacency g{gl::Buffer(std::span<const glm::vec3>(adj.positions)), gl::Buffer(std::span<const std::uint32_t>(adj.indices)),
                        gl::VertexArray(), {}};
         for (const EdgeCounts& part : adj.parts) g.partClosed.push_back(part.closed());
@@ -52,12 +59,12 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
         glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
         g.vao.attribute(0, 0, 3, 0);
         meshes_.push_back(std::move(g));
-        const EdgeCounts edges = adj.total();
+        const EdgeCounts& edges = adj.edges;
         if (edges.closed()) continue;
         ++open[log::format("{} ({} border, {} shared by more than two, {} wound against their neighbour)",
                            mesh.name.empty() ? std::string("unnamed mesh") : mesh.name, edges.boundary, edges.nonManifold, edges.misoriented)];
     }
-    logBothSided(open, frame.scene->meshes.size());
+    logBothSided(open, scene.meshes.size());
 }
 
 void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light, const NearClipVolume& nearClip, Counting counting) {
