@@ -4,6 +4,8 @@
 #include "gl/PassState.h"
 #include "util/Log.h"
 
+#include <algorithm>
+#include <limits>
 #include <map>
 
 namespace penumbra::shadows {
@@ -44,14 +46,17 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     meshes_.clear();
     std::map<std::string, int> open;  // "name (its edges)" of the meshes that cast from both sides -> how many
     const scene::Scene& scene = *frame.scene;
+    // Per mesh, the parts some object leaves out of its volumes (glass): paired on their own.
+    std::vector<std::vector<bool>> alone(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) alone[m].assign(scene.meshes[m].parts.size(), false);
+    for (const auto& obj : scene.objects) {
+        const auto m = static_cast<std::size_t>(obj.mesh);
+        for (std::size_t p = 0; obj.castsShadow && p < alone[m].size(); ++p)
+            if (scene.material(obj, scene.meshes[m].parts[p]).translucent()) alone[m][p] = true;
+    }
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
-        // Parts some object leaves out of its volumes (glass) are paired on their own.
-        std::vector<bool> alone(mesh.parts.size(), false);
-        for (const auto& obj : scene.objects)
-            for (std::size_t p = 0; obj.castsShadow && static_cast<std::size_t>(obj.mesh) == m && p < alone.size(); ++p)
-                alone[p] = alone[p] || scene.material(obj, mesh.parts[p]).translucent();
-        const AdjacencyMesh adj = buildAdjacency(mesh, alone);
+        const AdjacencyMesh adj = buildAdjacency(mesh, alone[m]);
         GpuAdjacency g{gl::Buffer(std::span<const glm::vec3>(adj.positions)), gl::Buffer(std::span<const std::uint32_t>(adj.indices)),
                        gl::VertexArray(), {}};
         for (const EdgeCounts& part : adj.parts) g.partClosed.push_back(part.closed());
@@ -76,9 +81,12 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
     const float diagonal = glm::length(frame.sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
     volumes_.set("uExtrusion", infinite_ ? 0.0f : 2.0f * (diagonal + lightDistance));
-    float farAlongLight = -std::numeric_limits<float>::max();
-    for (const glm::vec3& corner : frame.sceneBounds.corners()) farAlongLight = std::max(farAlongLight, glm::dot(glm::normalize(light.direction), corner));
-    volumes_.set("uFarAlongLight", farAlongLight + 0.01f * diagonal);
+    if (!point) {  // the plane a sun's volumes end on: past the scene's farthest corner along the light
+        float farAlongLight = -std::numeric_limits<float>::max();
+        for (const glm::vec3& corner : frame.sceneBounds.corners())
+            farAlongLight = std::max(farAlongLight, glm::dot(glm::normalize(light.direction), corner));
+        volumes_.set("uFarAlongLight", farAlongLight + 0.01f * diagonal);
+    }
     volumes_.use();
     const scene::Scene& scene = *frame.scene;
     for (const auto& obj : scene.objects) {
