@@ -168,6 +168,20 @@ TEST(SceneFile, CameraPathMovesEyeAndTarget) {
               std::string::npos);
 }
 
+// A model placed many times (street.json: six models, seven times each) is imported once: its
+// objects share one mesh and its materials, each with its own transform. "./" names the same file.
+TEST(SceneFile, AModelNamedTwiceIsImportedOnce) {
+    const Scene s = parse(R"({ "lights": [ { "type": "directional", "direction": [0, -1, 0] } ],
+      "objects": [ { "model": "materials.obj" }, { "model": "./materials.obj", "position": [3, 0, 0], "material": { "diffuse": [1, 0, 0] } },
+                   { "shape": "box" } ] })");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(s.objects[0].mesh, s.objects[1].mesh);
+    EXPECT_EQ(s.meshes.size(), 2u) << "the model once, the box";
+    EXPECT_NE(s.objects[0].transformAt(0.0f), s.objects[1].transformAt(0.0f));
+    EXPECT_LT(s.objects[0].materialOverride, 0) << "the first keeps the model's materials";
+    EXPECT_GE(s.objects[1].materialOverride, 0) << "the second overrides them, for itself only";
+}
+
 TEST(SceneFile, MissingModelNamesTheModelFile) {
     const std::string e = errorOf([] { loadScene(kData / "missing_model.json"); });
     EXPECT_NE(e.find("no/such/model.obj"), std::string::npos) << e;

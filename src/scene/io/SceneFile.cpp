@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <glm/gtc/constants.hpp>
 #include <set>
 #include <sstream>
@@ -280,7 +281,9 @@ Animation readAnimation(const Reader& r, const json& j, const std::string& p) {
     return a;
 }
 
-void readObject(const Reader& r, const json& j, const std::string& p, Scene& scene) {
+// `models`: each model file imported so far -> its mesh. Objects that name the same file share
+// one mesh (street.json places each of its six models seven times): one import, one upload.
+void readObject(const Reader& r, const json& j, const std::string& p, Scene& scene, std::map<fs::path, int>& models) {
     r.allowKeys(j, p, {"name", "model", "shape", "size", "radius", "position", "rotation_deg", "scale", "material",
                        "animation", "cast_shadows", "visible", "region"});
     Object o;
@@ -288,7 +291,9 @@ void readObject(const Reader& r, const json& j, const std::string& p, Scene& sce
     if (hasModel == hasShape) r.fail(p, "", "an object needs exactly one of 'model' or 'shape'");
     if (hasModel) {
         try {
-            o.mesh = importModel(r.resolve(r.string(j, "model", p, "")), scene);
+            const fs::path file = r.resolve(r.string(j, "model", p, "")).lexically_normal();
+            const auto found = models.find(file);
+            o.mesh = found != models.end() ? found->second : models[file] = importModel(file, scene);
         } catch (const InputError& e) {  // name the scene's line too: "scene.json:12: objects[3]: model.obj: ..."
             r.fail(p, "model", e.what());
         }
@@ -428,8 +433,9 @@ Scene parseSceneJson(const std::string& text, const fs::path& file) {
     }
     if (!doc.contains("objects") || !doc["objects"].is_array() || doc["objects"].empty())
         r.fail("", "objects", "a scene needs a non-empty 'objects' array");
+    std::map<fs::path, int> models;
     for (std::size_t i = 0; i < doc["objects"].size(); ++i)
-        readObject(r, doc["objects"][i], "objects[" + std::to_string(i) + "]", scene);
+        readObject(r, doc["objects"][i], "objects[" + std::to_string(i) + "]", scene, models);
     return scene;
 }
 
