@@ -7,7 +7,6 @@
 #include "render/Offscreen.h"
 #include "util/Log.h"
 
-#include <algorithm>
 #include <fstream>
 
 namespace penumbra::test {

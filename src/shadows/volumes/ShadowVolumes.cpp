@@ -2,6 +2,7 @@
 
 #include "gl/Debug.h"
 #include "gl/PassState.h"
+#include "shadows/volumes/NearClipVolume.h"
 #include "util/Log.h"
 
 #include <algorithm>
@@ -72,11 +73,10 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     logBothSided(open, scene.meshes.size());
 }
 
-void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& light, const NearClipVolume& nearClip, Counting counting) {
+void ShadowVolumes::setLight(const ShadowFrame& frame, const scene::Light& light) {
     const bool point = light.type != scene::Light::Type::Directional;
     volumes_.set("uLight", point ? glm::vec4(light.position, 1.0f) : glm::vec4(glm::normalize(light.direction), 0.0f));
     volumes_.set("uViewProj", mask_.viewProj());
-    volumes_.set("uCaps", counting == kZFail ? 1 : 0);
     // Past every receiver: the scene's diagonal plus the light's distance to the scene.
     const float diagonal = glm::length(frame.sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
@@ -87,21 +87,34 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const scene::Light& li
             farAlongLight = std::max(farAlongLight, glm::dot(glm::normalize(light.direction), corner));
         volumes_.set("uFarAlongLight", farAlongLight + 0.01f * diagonal);
     }
-    volumes_.use();
-    const scene::Scene& scene = *frame.scene;
-    for (const auto& obj : scene.objects) {
+}
+
+// The casting objects with their transforms, split by how their volumes are counted for `light`.
+std::array<std::vector<ShadowVolumes::Caster>, 2> ShadowVolumes::castersByCounting(const ShadowFrame& frame,
+                                                                                    const scene::Light& light) const {
+    const NearClipVolume nearClip(glm::inverse(mask_.viewProj()), light);
+    std::array<std::vector<Caster>, 2> out;  // [0]: z-fail, [1]: z-pass
+    for (const auto& obj : frame.scene->objects) {
         if (!obj.castsShadow) continue;
         const glm::mat4 model = obj.transformAt(frame.time);
-        const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj.mesh)];
-        const Counting chosen = counting_ != kAuto ? static_cast<Counting>(counting_)
-                                : nearClip.mayHold(mesh.bounds.transformed(model)) ? kZFail : kZPass;
-        if (chosen != counting) continue;
+        const scene::Mesh& mesh = frame.scene->meshes[static_cast<std::size_t>(obj.mesh)];
+        const bool zFail = counting_ == kAuto ? nearClip.mayHold(mesh.bounds.transformed(model)) : counting_ == kZFail;
+        out[zFail ? 0 : 1].push_back({&obj, model});
+    }
+    return out;
+}
+
+void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const std::vector<Caster>& casters) {
+    volumes_.use();
+    const scene::Scene& scene = *frame.scene;
+    for (const auto& [obj, model] : casters) {
         volumes_.set("uModel", model);
-        const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(obj.mesh)];
+        const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj->mesh)];
+        const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(obj->mesh)];
         adjacency.vao.bind();
         for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
             const scene::MeshPart& part = mesh.parts[p];
-            if (scene.material(obj, part).translucent()) continue;  // tints through the shared maps instead
+            if (scene.material(*obj, part).translucent()) continue;  // tints through the shared maps instead
             volumes_.set("uBothSides", adjacency.partClosed[p] ? 0 : 1);
             glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(part.indexCount * 2), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * 2 * sizeof(std::uint32_t)));
@@ -141,11 +154,14 @@ void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
     for (std::size_t i = 0; i < lights.size(); ++i) {
         mask_.beginLight(static_cast<int>(i));
         if (!lights[i].shadow.enabled) continue;
-        const NearClipVolume nearClip(glm::inverse(mask_.viewProj()), lights[i]);
-        for (const Counting counting : {kZFail, kZPass}) {
-            if (counting_ != kAuto && counting_ != counting) continue;
-            const gl::ScopedPassState state(countingState(counting == kZFail));
-            drawVolumes(frame, lights[i], nearClip, counting);
+        setLight(frame, lights[i]);
+        const auto casters = castersByCounting(frame, lights[i]);
+        for (const bool zFail : {true, false}) {
+            const std::vector<Caster>& counted = casters[zFail ? 0 : 1];
+            if (counted.empty()) continue;
+            const gl::ScopedPassState state(countingState(zFail));
+            volumes_.set("uCaps", zFail ? 1 : 0);
+            drawVolumes(frame, counted);
         }
         mask_.shadowWhereStencilNonZero();
     }

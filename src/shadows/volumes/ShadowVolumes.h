@@ -5,7 +5,9 @@
 #include "shadows/common/DepthAndTintMaps.h"
 #include "shadows/common/ScreenShadowMask.h"
 #include "shadows/volumes/Adjacency.h"
-#include "shadows/volumes/NearClipVolume.h"
+
+#include <array>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -42,8 +44,13 @@ private:
     };
     void upload(const ShadowFrame& frame);
     enum Counting { kAuto, kZFail, kZPass };  // the labels' order in declareParameters
-    // Draws the volumes of the casters `counting` (kZFail or kZPass) is chosen for.
-    void drawVolumes(const ShadowFrame& frame, const scene::Light& light, const NearClipVolume& nearClip, Counting counting);
+    struct Caster {
+        const scene::Object* object;
+        glm::mat4 model;
+    };
+    void setLight(const ShadowFrame& frame, const scene::Light& light);
+    std::array<std::vector<Caster>, 2> castersByCounting(const ShadowFrame& frame, const scene::Light& light) const;
+    void drawVolumes(const ShadowFrame& frame, const std::vector<Caster>& casters);
     int counting_ = kAuto;
     bool infinite_ = false;
     const scene::Scene* uploaded_ = nullptr;
