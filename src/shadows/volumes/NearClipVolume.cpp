@@ -40,12 +40,11 @@ NearClipVolume::NearClipVolume(const glm::mat4& inverseViewProj, const scene::Li
         // Each side holds the rectangle's edge and the direction to the light from it.
         planes_.push_back(planeFacing(a, b, directional ? toLight : light.position - a, inside));
     }
-    everything_ = false;
 }
 
 bool NearClipVolume::mayHold(const scene::Bounds& box) const {
-    if (everything_) return true;
     if (box.empty()) return false;
+    if (planes_.empty()) return true;
     for (const glm::vec4& plane : planes_) {
         // The box corner farthest along the plane's normal: outside if even it is behind.
         const glm::vec3 n(plane);

@@ -25,8 +25,7 @@ public:
     bool mayHold(const scene::Bounds& worldBounds) const;
 
 private:
-    std::vector<glm::vec4> planes_;  // inside: dot(plane, (p, 1)) >= 0
-    bool everything_ = true;
+    std::vector<glm::vec4> planes_;  // inside: dot(plane, (p, 1)) >= 0; none: it may hold everything
 };
 
 }  // namespace penumbra::shadows
