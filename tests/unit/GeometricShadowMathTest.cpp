@@ -24,6 +24,20 @@ TEST(Adjacency, BoxAndSphereAreClosedAPlaneHasFourBorderEdges) {
     EXPECT_FALSE(plane.closed());
 }
 
+TEST(Adjacency, NeighboursShareTheEdgeTheOtherWay) {
+    const AdjacencyMesh box = buildAdjacency(scene::shapes::box(glm::vec3(1.0f)));
+    for (std::size_t t = 0; t < box.indices.size(); t += 6)
+        for (int e = 0; e < 6; e += 2) {
+            const std::uint32_t a = box.indices[t + e], b = box.indices[t + (e + 2) % 6], n = box.indices[t + e + 1];
+            // Find the neighbour triangle (a, n, b) wound b -> a somewhere in the list.
+            bool found = false;
+            for (std::size_t u = 0; u < box.indices.size() && !found; u += 6)
+                for (int k = 0; k < 6; k += 2)
+                    if (box.indices[u + k] == b && box.indices[u + (k + 2) % 6] == a && box.indices[u + (k + 4) % 6] == n) found = true;
+            EXPECT_TRUE(found) << "triangle " << t / 6 << " edge " << e / 2;
+        }
+}
+
 // Every neighbour relation goes both ways: if triangle t's edge (a, b) has n as its neighbour's
 // corner, the triangle (a, b, n) has t's opposite corner on that edge. The geometry shader's
 // invocations for t and for it then agree whether the edge is a silhouette. Returns the number
