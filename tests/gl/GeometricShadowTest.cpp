@@ -1,7 +1,9 @@
 // Shadow volumes and planar projected shadows against the ray-traced reference, and the failure
 // modes each must reproduce on request.
 #include "GlTestSupport.h"
+#include "gl/Debug.h"
 #include "reference/Comparison.h"
+#include "render/Offscreen.h"
 #include "shadows/volumes/Adjacency.h"
 #include "util/Log.h"
 
@@ -132,6 +134,67 @@ TEST(ShadowVolumes, AGlassPartLeavesTheRestOfItsMeshClosed) {
         std::printf("glass-topped box (%s): %.4f%% wrong, colour error %.4f\n", counting, 100 * score.wrongShare, score.colourError);
         EXPECT_LT(score.wrongShare, 0.001) << counting;
     }
+}
+
+// A low sun along a long street: each caster's volume ends on its own plane (VolumeExtent::farPlane),
+// a little past the last point of the scene its shadow can reach: here just under the ground, for
+// the sign's and the balcony's shadows on the street, the wall and the shed.
+TEST(ShadowVolumes, EachCastersVolumeReachesItsWholeShadowUnderALowSun) {
+    scene::Scene s = sceneFromJson(R"({ "camera": { "position": [5, 4, 9], "target": [0, 1, -6], "fov_deg": 55 },
+      "lights": [ { "type": "directional", "direction": [0.25, -0.3, -1] } ],
+      "objects": [ { "name": "street", "shape": "plane", "size": [12, 120], "position": [0, 0, -50] },
+                   { "name": "pole", "shape": "box", "size": [0.3, 4, 0.3], "position": [-1.5, 2, 0] },
+                   { "name": "wall", "shape": "box", "size": [8, 3, 0.4], "position": [1, 1.5, -12] },
+                   { "name": "shed", "shape": "box", "size": [2, 1.2, 2], "position": [0.5, 0.6, -5] },
+                   { "name": "crate", "shape": "box", "size": [0.8, 0.8, 0.8], "position": [2.5, 0.4, 3] },
+                   { "name": "sign", "shape": "box", "size": [1.6, 0.6, 0.1], "position": [-3, 2.5, 7], "rotation_deg": [0, 20, 0] },
+                   { "name": "balcony", "shape": "box", "size": [3, 0.2, 1.2], "position": [2, 3.5, -9] } ] })");
+    reference::Comparison cmp(s, 320, 240, 0.0f);
+    cmp.traceReference(1, false);
+    for (const char* counting : {"auto", "zfail", "zpass"}) {
+        const auto score = cmp.evaluate("shadow-volumes", 1024, 0, {{"counting", counting}});
+        std::printf("low sun along a street (%s): %.4f%% wrong\n", counting, 100 * score.wrongShare);
+        EXPECT_LT(score.wrongShare, 0.0005) << counting;
+    }
+}
+
+// Still casters under still lights keep their volumes across frames (VolumeCache): drawn again
+// through a moved camera they must count as the geometry shader's new ones do, a caster that moves
+// must shadow from where it is now (a kept volume would leave its shadow where it was), and one
+// that stops is kept again from there.
+TEST(ShadowVolumes, KeptVolumesShadowAsNewOnesAndFollowWhatMoves) {
+    scene::Scene s = sceneFromJson(closedScene(R"({ "type": "directional", "direction": [-0.5, -1, -0.3] },
+                                                 { "type": "point", "position": [2, 4, -2] })"));
+    constexpr int w = 240, h = 180;
+    const render::RenderOptions options = optionsFor("shadow-volumes");
+    render::Renderer kept(s, options);
+    render::OffscreenTarget target(w, h);
+    const auto renderKept = [&](const scene::Camera& camera) {
+        kept.render(0.0f, camera, w, h, target.framebuffer());
+        return kept.readLinear();
+    };
+    const auto renderNew = [&](const scene::Camera& camera) {
+        render::Renderer fresh(s, options);
+        fresh.render(0.0f, camera, w, h, target.framebuffer());
+        return fresh.readLinear();
+    };
+    renderKept(s.camera);
+    const std::size_t before = kept.shadowMemoryBytes();
+    renderKept(s.camera);  // everything held still: captured
+    EXPECT_GT(kept.shadowMemoryBytes(), before) << "the still casters' volumes are kept";
+
+    scene::Camera moved = s.camera;
+    moved.position += glm::vec3(-1.5f, 1.0f, 0.5f);
+    const std::vector<float> keptView = renderKept(moved);
+    EXPECT_EQ(differingPixels(keptView, renderNew(moved)), 0u) << "kept volumes through a new camera";
+
+    s.objects[1].position += glm::vec3(0.0f, 0.0f, 1.2f);  // a box moves: its volumes are made anew
+    const std::vector<float> afterMove = renderKept(moved);
+    EXPECT_EQ(differingPixels(afterMove, renderNew(moved)), 0u) << "the moved box shadows from where it is";
+    EXPECT_GT(differingPixels(afterMove, keptView), 200u) << "the box and its shadows moved in view";
+    renderKept(moved);
+    EXPECT_EQ(differingPixels(renderKept(moved), renderNew(moved)), 0u) << "kept again where it stopped";
+    EXPECT_EQ(gl::debugErrorCount(), 0);
 }
 
 TEST(PlanarShadows, MatchTheReferenceOnAFlatReceiver) {

@@ -4,8 +4,11 @@
 #include "shadows/planar/PlanarFit.h"
 #include "shadows/volumes/Adjacency.h"
 #include "shadows/volumes/NearClipVolume.h"
+#include "shadows/volumes/VolumeExtent.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -154,6 +157,48 @@ TEST(NearClipVolume, HoldsOnlyWhatLiesBetweenTheNearPlaneAndTheLight) {
     scene::Light edgeOn;
     edgeOn.direction = {1, 0, 0};
     EXPECT_TRUE(NearClipVolume(inverseViewProj, edgeOn).mayHold(boxAround({0, 0, -50}, 0.1f)));
+}
+
+// A sun's volume may end on a plane per caster: past every point of the scene's box that a ray
+// from the caster reaches, and for a low sun over a long street far short of the street's end.
+TEST(VolumeExtent, ASunsVolumeEndsPastEveryReceiverItsCasterShadows) {
+    scene::Bounds street;
+    street.add({-10, 0, -100});
+    street.add({10, 12, 100});
+    for (const glm::vec3& direction : {glm::vec3(0.3f, -0.35f, -1.0f), glm::vec3(-0.2f, -1.0f, 0.1f), glm::vec3(0.05f, -0.04f, 1.0f)}) {
+        scene::Light sun;
+        sun.direction = glm::normalize(direction);
+        const VolumeExtent extent(sun, street, false);
+        const glm::vec3 d = glm::vec3(extent.light());
+        const glm::vec4 wholeStreet = extent.farPlane(street);
+        for (const scene::Bounds& caster : {boxAround({0, 4, 0}, 1.0f), boxAround({-8, 10, 90}, 2.0f), boxAround({9, 1, -99}, 1.0f), street}) {
+            const glm::vec4 plane = extent.farPlane(caster);
+            const glm::vec3 n(plane);
+            ASSERT_GT(glm::dot(n, d), 0.0f) << "every ray from the caster meets the plane";
+            EXPECT_LE(extent.longestRay(plane, caster), extent.longestRay(wholeStreet, caster));
+            // Points of the caster's box, followed along the light while they stay in the street's box.
+            for (int i = 0; i <= 4; ++i)
+                for (int j = 0; j <= 4; ++j)
+                    for (int k = 0; k <= 4; ++k) {
+                        const glm::vec3 p = caster.min + caster.extent() * glm::vec3(i, j, k) / 4.0f;
+                        float t = 1e30f;
+                        for (int a = 0; a < 3; ++a)
+                            if (d[a] != 0.0f) t = std::min(t, ((d[a] > 0 ? street.max[a] : street.min[a]) - p[a]) / d[a]);
+                        EXPECT_LT(glm::dot(n, p), plane.w) << "the caster lies short of its plane";
+                        EXPECT_LT(glm::dot(n, p + t * d), plane.w) << "a receiver past the plane would be left out of the shadow";
+                    }
+        }
+    }
+    // Under a low sun along the street a post's volume ends just under the ground past its shadow
+    // (16 m from the top of a 5 m post), not across the light past the street's far corner.
+    scene::Light low;
+    low.direction = glm::normalize(glm::vec3(0.3f, -0.35f, -1.0f));
+    const VolumeExtent extent(low, street, false);
+    const scene::Bounds post = boxAround({0, 4, 0}, 1.0f);
+    float farCorner = -1e30f;
+    for (const glm::vec3& c : street.corners()) farCorner = std::max(farCorner, glm::dot(glm::vec3(extent.light()), c));
+    EXPECT_LT(extent.longestRay(extent.farPlane(post), post), 25.0f);
+    EXPECT_GT(extent.longestRay(glm::vec4(glm::vec3(extent.light()), farCorner), post), 80.0f);
 }
 
 TEST(PlanarShadow, FlattensOntoThePlaneAlongTheLight) {

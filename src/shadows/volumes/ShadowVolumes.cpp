@@ -5,9 +5,9 @@
 #include "shadows/volumes/NearClipVolume.h"
 #include "util/Log.h"
 
-#include <algorithm>
-#include <limits>
+#include <cstdint>
 #include <map>
+#include <utility>
 
 namespace penumbra::shadows {
 
@@ -15,10 +15,11 @@ ShadowVolumes::ShadowVolumes() {
     volumes_ = gl::Program::build({.vertex = "src/shadows/volumes/volume.vert",
                                    .fragment = "src/shadows/volumes/volume.frag",
                                    .geometry = "src/shadows/volumes/volume.geom"});
+    kept_ = gl::Program::build({.vertex = "src/shadows/volumes/volume_kept.vert", .fragment = "src/shadows/volumes/volume.frag"});
 }
 
 std::size_t ShadowVolumes::memoryBytes() const {
-    std::size_t bytes = maps_.memoryBytes() + mask_.memoryBytes();
+    std::size_t bytes = maps_.memoryBytes() + mask_.memoryBytes() + cache_.memoryBytes();
     for (const auto& m : meshes_) bytes += m.positions.size() + m.indices.size();
     return bytes;
 }
@@ -45,6 +46,7 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     if (uploaded_ == frame.scene) return;
     uploaded_ = frame.scene;
     meshes_.clear();
+    cache_.reset(0, 0);
     std::map<std::string, int> open;  // "name (its edges)" of the meshes that cast from both sides -> how many
     const scene::Scene& scene = *frame.scene;
     // Per mesh, the parts some object leaves out of its volumes (glass): paired on their own.
@@ -73,53 +75,77 @@ void ShadowVolumes::upload(const ShadowFrame& frame) {
     logBothSided(open, scene.meshes.size());
 }
 
-void ShadowVolumes::setLight(const ShadowFrame& frame, const scene::Light& light) {
-    const bool point = light.type != scene::Light::Type::Directional;
-    volumes_.set("uLight", point ? glm::vec4(light.position, 1.0f) : glm::vec4(glm::normalize(light.direction), 0.0f));
+VolumeExtent ShadowVolumes::setLight(const ShadowFrame& frame, const scene::Light& light) {
+    const VolumeExtent extent(light, frame.sceneBounds, infinite_);
+    volumes_.set("uLight", extent.light());
     volumes_.set("uViewProj", mask_.viewProj());
-    // Past every receiver: the scene's diagonal plus the light's distance to the scene.
-    const float diagonal = glm::length(frame.sceneBounds.extent());
-    const float lightDistance = point ? glm::length(light.position - frame.sceneBounds.center()) : 0.0f;
-    volumes_.set("uExtrusion", infinite_ ? 0.0f : 2.0f * (diagonal + lightDistance));
-    if (!point) {  // the plane a sun's volumes end on: past the scene's farthest corner along the light
-        float farAlongLight = -std::numeric_limits<float>::max();
-        for (const glm::vec3& corner : frame.sceneBounds.corners())
-            farAlongLight = std::max(farAlongLight, glm::dot(glm::normalize(light.direction), corner));
-        volumes_.set("uFarAlongLight", farAlongLight + 0.01f * diagonal);
-    }
+    volumes_.set("uExtrusion", extent.extrusion());
+    return extent;
 }
 
 // The casting objects with their transforms, split by how their volumes are counted for `light`.
-std::array<std::vector<ShadowVolumes::Caster>, 2> ShadowVolumes::castersByCounting(const ShadowFrame& frame,
-                                                                                    const scene::Light& light) const {
+std::array<std::vector<ShadowVolumes::Caster>, 2> ShadowVolumes::castersByCounting(const ShadowFrame& frame, const scene::Light& light,
+                                                                                    const VolumeExtent& extent) const {
     const NearClipVolume nearClip(glm::inverse(mask_.viewProj()), light);
     std::array<std::vector<Caster>, 2> out;  // [0]: z-fail, [1]: z-pass
     for (const auto& obj : frame.scene->objects) {
         if (!obj.castsShadow) continue;
         const glm::mat4 model = obj.transformAt(frame.time);
         const scene::Mesh& mesh = frame.scene->meshes[static_cast<std::size_t>(obj.mesh)];
-        const bool zFail = counting_ == kAuto ? nearClip.mayHold(mesh.bounds.transformed(model)) : counting_ == kZFail;
-        out[zFail ? 0 : 1].push_back({&obj, model});
+        const scene::Bounds box = mesh.bounds.transformed(model);
+        const bool zFail = counting_ == kAuto ? nearClip.mayHold(box) : counting_ == kZFail;
+        out[zFail ? 0 : 1].push_back({&obj, model, extent.farPlane(box)});
     }
     return out;
 }
 
-void ShadowVolumes::drawVolumes(const ShadowFrame& frame, const std::vector<Caster>& casters) {
-    volumes_.use();
+// One caster's volume through the geometry shader (uEmit set by the caller).
+void ShadowVolumes::drawVolume(const scene::Scene& scene, const Caster& caster) const {
+    volumes_.set("uModel", caster.model);
+    volumes_.set("uFarPlane", caster.farPlane);
+    const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(caster.object->mesh)];
+    const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(caster.object->mesh)];
+    adjacency.vao.bind();
+    for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
+        const scene::MeshPart& part = mesh.parts[p];
+        if (scene.material(*caster.object, part).translucent()) continue;  // tints through the shared maps instead
+        volumes_.set("uBothSides", adjacency.partClosed[p] ? 0 : 1);
+        glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(part.indexCount * 2), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * 2 * sizeof(std::uint32_t)));
+    }
+}
+
+// The casters' volumes under light `light`, sides and (z-fail) caps. A caster that held still
+// since the last frame, under a light that did too, draws what VolumeCache captured of it; the
+// others go through the geometry shader.
+void ShadowVolumes::drawVolumes(const ShadowFrame& frame, std::size_t light, const VolumeExtent& extent,
+                                const std::vector<Caster>& casters, bool zFail) {
+    constexpr int kSides = 1, kCaps = 2;  // volume.geom's uEmit bits
     const scene::Scene& scene = *frame.scene;
-    for (const auto& [obj, model] : casters) {
-        volumes_.set("uModel", model);
-        const scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(obj->mesh)];
-        const GpuAdjacency& adjacency = meshes_[static_cast<std::size_t>(obj->mesh)];
-        adjacency.vao.bind();
-        for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
-            const scene::MeshPart& part = mesh.parts[p];
-            if (scene.material(*obj, part).translucent()) continue;  // tints through the shared maps instead
-            volumes_.set("uBothSides", adjacency.partClosed[p] ? 0 : 1);
-            glDrawElements(GL_TRIANGLES_ADJACENCY, static_cast<GLsizei>(part.indexCount * 2), GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(part.firstIndex) * 2 * sizeof(std::uint32_t)));
+    std::vector<const VolumeCache::Capture*> kept;
+    volumes_.use();
+    for (const Caster& caster : casters) {
+        const auto object = static_cast<std::size_t>(caster.object - scene.objects.data());
+        const VolumeCache::Key key{caster.model, extent.light(), caster.farPlane, extent.extrusion()};
+        VolumeCache::Entry* still = frame.reuseStillCasters ? cache_.still(light, object, key) : nullptr;
+        if (!still) {
+            volumes_.set("uEmit", zFail ? kSides | kCaps : kSides);
+            drawVolume(scene, caster);
+            continue;
+        }
+        for (const auto& [capture, emit] : {std::pair{&still->sides, kSides}, std::pair{&still->caps, kCaps}}) {
+            if (emit == kCaps && !zFail) continue;
+            if (capture->vertices < 0) {
+                volumes_.set("uEmit", emit);
+                VolumeCache::capture(*capture, [&] { drawVolume(scene, caster); });
+            }
+            kept.push_back(capture);
         }
     }
+    if (kept.empty()) return;
+    kept_.use();
+    kept_.set("uViewProj", mask_.viewProj());
+    for (const VolumeCache::Capture* capture : kept) VolumeCache::draw(*capture);
 }
 
 namespace {
@@ -148,20 +174,20 @@ void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
     maps_.render(frame);  // coloured tint, and the fallback for glass the pre-pass does not see
     if (!frame.scene || !frame.camera || frame.viewport.x <= 0) return;
     upload(frame);
+    cache_.fit(frame.lights->size(), frame.scene->objects.size());
     gl::DebugGroup group("shadow volumes");
     mask_.begin(frame);
     const auto& lights = *frame.lights;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         mask_.beginLight(static_cast<int>(i));
         if (!lights[i].shadow.enabled) continue;
-        setLight(frame, lights[i]);
-        const auto casters = castersByCounting(frame, lights[i]);
+        const VolumeExtent extent = setLight(frame, lights[i]);
+        const auto casters = castersByCounting(frame, lights[i], extent);
         for (const bool zFail : {true, false}) {
             const std::vector<Caster>& counted = casters[zFail ? 0 : 1];
             if (counted.empty()) continue;
             const gl::ScopedPassState state(countingState(zFail));
-            volumes_.set("uCaps", zFail ? 1 : 0);
-            drawVolumes(frame, counted);
+            drawVolumes(frame, i, extent, counted, zFail);
         }
         mask_.shadowWhereStencilNonZero();
     }

@@ -5,6 +5,8 @@
 #include "shadows/common/DepthAndTintMaps.h"
 #include "shadows/common/ScreenShadowMask.h"
 #include "shadows/volumes/Adjacency.h"
+#include "shadows/volumes/VolumeCache.h"
+#include "shadows/volumes/VolumeExtent.h"
 
 #include <array>
 #include <vector>
@@ -16,8 +18,11 @@ namespace penumbra::shadows {
 // counted per pixel in the stencil buffer: z-fail with capped volumes for casters whose volume
 // the near plane may cut (NearClipVolume), z-pass for the rest. Exact per pixel, any light type.
 // Open, non-manifold or inconsistently wound parts cast from both sides of every triangle, as
-// the reference sees them, at up to twice the fill. Translucent casters tint through the shared
-// per-light maps and alpha-tested holes are not seen (the volume is the geometry).
+// the reference sees them, at up to twice the fill. A sun's volumes end on a plane just past
+// what their caster can shadow (VolumeExtent); still casters under still lights keep their
+// volumes across frames (VolumeCache), and only the counting follows the camera. Translucent
+// casters tint through the shared per-light maps and alpha-tested holes are not seen (the volume
+// is the geometry).
 class ShadowVolumes final : public ShadowTechnique {
 public:
     ShadowVolumes();
@@ -47,15 +52,19 @@ private:
     struct Caster {
         const scene::Object* object;
         glm::mat4 model;
+        glm::vec4 farPlane;  // a sun's: the plane its volume ends on (VolumeExtent)
     };
-    void setLight(const ShadowFrame& frame, const scene::Light& light);
-    std::array<std::vector<Caster>, 2> castersByCounting(const ShadowFrame& frame, const scene::Light& light) const;
-    void drawVolumes(const ShadowFrame& frame, const std::vector<Caster>& casters);
+    VolumeExtent setLight(const ShadowFrame& frame, const scene::Light& light);
+    std::array<std::vector<Caster>, 2> castersByCounting(const ShadowFrame& frame, const scene::Light& light, const VolumeExtent& extent) const;
+    void drawVolume(const scene::Scene& scene, const Caster& caster) const;
+    void drawVolumes(const ShadowFrame& frame, std::size_t light, const VolumeExtent& extent, const std::vector<Caster>& casters, bool zFail);
     int counting_ = kAuto;
     bool infinite_ = false;
     const scene::Scene* uploaded_ = nullptr;
     std::vector<GpuAdjacency> meshes_;
     gl::Program volumes_;
+    gl::Program kept_;  // draws VolumeCache's captures
+    VolumeCache cache_;
     ScreenShadowMask mask_;
     DepthAndTintMaps maps_;
 };

@@ -11,15 +11,20 @@
 // the pixel: non-zero is shadow. A side two neighbours share is left out only where their
 // volumes' sides there cancel (they run the edge opposite ways once turned to the light), the
 // way Stich, Wächter and Keller handle non-closed models (GPU Gems 3, ch. 11, "multiplicity").
+#include "src/shadows/volumes/volume_clip.glsl"
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 18) out;
+// What VolumeCache captures by transform feedback (in world space, each strip as triangles) to
+// draw again through later frames' cameras with volume_kept.vert.
+layout(xfb_buffer = 0, xfb_offset = 0) out vec4 gWorld;
+layout(xfb_buffer = 0, xfb_offset = 16) out float gNudge;
 in int vIndex[];
 uniform int uBothSides;
 uniform mat4 uViewProj;
 uniform vec4 uLight;  // xyz position, w = 1; or the direction light travels, w = 0
-uniform int uCaps;    // 1: emit light and dark caps (z-fail)
+uniform int uEmit;    // bit 0: the sides; bit 1: light and dark caps (z-fail, or a capture of caps alone)
 uniform float uExtrusion;  // beyond the scene's far side; 0: to infinity (w = 0)
-uniform float uFarAlongLight;  // a sun's: the scene's largest depth along the light, plus a margin
+uniform vec4 uFarPlane;  // a sun's: the plane (n, w) its volumes end on, n.d > 0, past every receiver (VolumeExtent)
 
 vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz; }
 
@@ -30,9 +35,9 @@ vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz
 vec4 extruded(vec3 p) {
     vec3 d = awayFromLight(p);
     if (uExtrusion <= 0.0) return vec4(d, 0.0);
-    // A sun's volumes end on one plane across the light past every receiver, so the dark cap,
+    // A sun's volumes end on one plane past every receiver their caster shadows, so the dark cap,
     // flat on it, stays out of the scene.
-    if (uLight.w < 0.5) return vec4(p + d * max(uFarAlongLight - dot(d, p), 0.0), 1.0);
+    if (uLight.w < 0.5) return vec4(p + d * max((uFarPlane.w - dot(uFarPlane.xyz, p)) / dot(uFarPlane.xyz, d), 0.0), 1.0);
     return vec4(p + normalize(d) * uExtrusion, 1.0);
 }
 
@@ -55,23 +60,21 @@ float facing(int i, int j, int k) {
     return odd ? -f : f;
 }
 
-void emit(vec4 worldOrDirection) { gl_Position = uViewProj * worldOrDirection; EmitVertex(); }
-
-// The light cap lies on the caster's own lit surface: nudged a little deeper (in window depth)
-// it fails the depth test there, as the dark cap does, and the two cancel. Sides are not nudged,
-// so the shadow's edge on a receiver stays exact.
-void emitCap(vec3 world) {
-    gl_Position = uViewProj * vec4(world, 1.0);
-    gl_Position.z += 2e-5 * gl_Position.w;
+void emitNudged(vec4 worldOrDirection, float nudge) {
+    gWorld = worldOrDirection;
+    gNudge = nudge;
+    gl_Position = volumeClip(uViewProj, worldOrDirection, nudge);
     EmitVertex();
 }
+void emit(vec4 worldOrDirection) { emitNudged(worldOrDirection, 0.0); }
+void emitCap(vec3 world) { emitNudged(vec4(world, 1.0), 1.0); }  // the light cap (volume_clip.glsl)
 
 void main() {
     for (int i = 0; i < 6; ++i) v[i] = gl_in[i].gl_Position.xyz;
     const float own = facing(0, 2, 4);
     if (own == 0.0 || (uBothSides == 0 && own < 0.0)) return;  // edge-on, welded flat, or (closed mesh) facing away
     const bool reversed = own < 0.0;
-    for (int e = 0; e < 6; e += 2) {
+    for (int e = 0; e < 6 && (uEmit & 1) != 0; e += 2) {
         const int a = e, b = (e + 2) % 6;
         // The neighbour, wound (a, n, b) as a consistent mesh winds it: facing the light the
         // same way as this triangle, the two volumes' sides on this edge run opposite ways and
@@ -85,7 +88,7 @@ void main() {
         emit(extruded(v[to]));
         EndPrimitive();
     }
-    if (uCaps == 0) return;
+    if ((uEmit & 2) == 0) return;
     const int second = reversed ? 4 : 2, third = reversed ? 2 : 4;
     emitCap(v[0]);
     emitCap(v[second]);
