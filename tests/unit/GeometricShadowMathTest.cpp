@@ -201,6 +201,39 @@ TEST(VolumeExtent, ASunsVolumeEndsPastEveryReceiverItsCasterShadows) {
     EXPECT_GT(extent.longestRay(glm::vec4(glm::vec3(extent.light()), farCorner), post), 80.0f);
 }
 
+// A point light's volume may end on a face of the scene's box that every ray from its caster
+// leaves through: the ground under a street lamp. Casters on every side of the light get none.
+TEST(VolumeExtent, APointLightsVolumeEndsOnAFaceItsCastersRaysAllLeaveThrough) {
+    scene::Bounds street;
+    street.add({-10, 0, -100});
+    street.add({10, 12, 100});
+    scene::Light lamp;
+    lamp.type = scene::Light::Type::Point;
+    lamp.position = {2, 6, 5};
+    const VolumeExtent extent(lamp, street, false);
+    for (const scene::Bounds& caster : {boxAround({0, 2, 3}, 1.0f), boxAround({6, 5, 5}, 0.5f), boxAround({2, 9, 40}, 2.0f)}) {
+        const glm::vec4 plane = extent.farPlane(caster);
+        const glm::vec3 n(plane);
+        ASSERT_NE(n, glm::vec3(0.0f)) << "the caster lies to one side of the lamp on some axis";
+        EXPECT_LT(extent.longestRay(plane, caster), extent.extrusion()) << "sooner than the fixed push";
+        for (int i = 0; i <= 4; ++i)
+            for (int j = 0; j <= 4; ++j)
+                for (int k = 0; k <= 4; ++k) {
+                    const glm::vec3 p = caster.min + caster.extent() * glm::vec3(i, j, k) / 4.0f;
+                    const glm::vec3 d = p - lamp.position;
+                    ASSERT_GT(glm::dot(n, d), 0.0f) << "every ray crosses the plane outwards";
+                    float t = 1e30f;  // where the ray from the lamp through p leaves the street's box
+                    for (int a = 0; a < 3; ++a)
+                        if (d[a] != 0.0f) t = std::min(t, ((d[a] > 0 ? street.max[a] : street.min[a]) - lamp.position[a]) / d[a]);
+                    EXPECT_LT(glm::dot(n, p), plane.w) << "the caster lies short of its plane";
+                    EXPECT_LT(glm::dot(n, lamp.position + t * d), plane.w) << "a receiver past the plane would be left out";
+                }
+    }
+    const scene::Bounds under = boxAround({0, 2, 3}, 1.0f);
+    EXPECT_EQ(extent.farPlane(under), glm::vec4(0, -1, 0, extent.farPlane(under).w)) << "the ground's plane, just under it";
+    EXPECT_EQ(extent.farPlane(boxAround(lamp.position, 1.0f)), glm::vec4(0.0f)) << "around the lamp: the fixed push";
+}
+
 TEST(PlanarShadow, FlattensOntoThePlaneAlongTheLight) {
     const glm::vec4 ground(0.0f, 1.0f, 0.0f, 0.0f);
     const glm::vec3 x(1.0f, 2.0f, 0.5f);

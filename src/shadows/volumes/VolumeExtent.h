@@ -1,6 +1,6 @@
 #pragma once
 // How far a light's shadow volumes reach: the uniforms of volume.geom's `extruded()`, worked out
-// per light and, for a sun, per caster. Pure CPU, no GL.
+// per light and caster. Pure CPU, no GL.
 #include "scene/Light.h"
 #include "scene/Mesh.h"
 
@@ -15,12 +15,14 @@ public:
 
     glm::vec4 light() const { return light_; }  // uLight: (position, 1), or (direction light travels, 0)
     float extrusion() const { return extrusion_; }  // uExtrusion: how far a point light pushes a vertex; 0: to infinity
-    // uFarPlane, a sun's: the plane (n, w) with n.d > 0 on which the volume of the casters inside
-    // `casterBounds` ends. Every point of the scene that their rays reach lies on its near side
-    // (n.x < w): of the plane across the light past the scene's farthest corner and the planes just
-    // past the scene box's faces the light leaves through, the one the casters' rays reach soonest.
+    // uFarPlane: the plane (n, w) on which the volume of the casters inside `casterBounds` ends,
+    // every ray from them crossing it outwards. Every point of the scene that their rays reach
+    // lies on its near side (n.x < w). Of the planes just past the scene box's faces (and for a
+    // sun, the plane across the light past the scene's farthest corner), the one the casters' rays
+    // reach soonest; (0, 0, 0, 0) for a point light that has casters on every side: its volumes
+    // are then pushed uExtrusion.
     glm::vec4 farPlane(const scene::Bounds& casterBounds) const;
-    // How far the longest ray from a corner of `casterBounds` runs to `plane`, along the light.
+    // How far the longest ray from a corner of `casterBounds` runs to `plane`, away from the light.
     float longestRay(const glm::vec4& plane, const scene::Bounds& casterBounds) const;
 
 private:

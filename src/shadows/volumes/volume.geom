@@ -24,7 +24,7 @@ uniform mat4 uViewProj;
 uniform vec4 uLight;  // xyz position, w = 1; or the direction light travels, w = 0
 uniform int uEmit;    // bit 0: the sides; bit 1: light and dark caps (z-fail, or a capture of caps alone)
 uniform float uExtrusion;  // beyond the scene's far side; 0: to infinity (w = 0)
-uniform vec4 uFarPlane;  // a sun's: the plane (n, w) its volumes end on, n.d > 0, past every receiver (VolumeExtent)
+uniform vec4 uFarPlane;  // the plane (n, w) the volume ends on, past every receiver (VolumeExtent); n = 0: none
 
 vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz; }
 
@@ -35,9 +35,10 @@ vec3 awayFromLight(vec3 p) { return uLight.w > 0.5 ? p - uLight.xyz : uLight.xyz
 vec4 extruded(vec3 p) {
     vec3 d = awayFromLight(p);
     if (uExtrusion <= 0.0) return vec4(d, 0.0);
-    // A sun's volumes end on one plane past every receiver their caster shadows, so the dark cap,
-    // flat on it, stays out of the scene.
-    if (uLight.w < 0.5) return vec4(p + d * max((uFarPlane.w - dot(uFarPlane.xyz, p)) / dot(uFarPlane.xyz, d), 0.0), 1.0);
+    // The volume ends on a plane past every receiver its caster shadows, so the dark cap, flat on
+    // it, stays out of the scene. Every ray from the caster crosses it outwards (along > 0).
+    float along = dot(uFarPlane.xyz, d);
+    if (along > 0.0) return vec4(p + d * max((uFarPlane.w - dot(uFarPlane.xyz, p)) / along, 0.0), 1.0);
     return vec4(p + normalize(d) * uExtrusion, 1.0);
 }
 
