@@ -137,7 +137,8 @@ void ShadowVolumes::drawVolumes(const ShadowFrame& frame, std::size_t light, con
             if (emit == kCaps && !zFail) continue;
             if (capture->vertices < 0) {
                 volumes_.set("uEmit", emit);
-                VolumeCache::capture(*capture, [&] { drawVolume(scene, caster); });
+                const std::size_t triangles = scene.meshes[static_cast<std::size_t>(caster.object->mesh)].triangleCount();
+                cache_.capture(*capture, triangles * (emit == kSides ? 6 : 2), [&] { drawVolume(scene, caster); });
             }
             kept.push_back(capture);
         }
@@ -191,6 +192,7 @@ void ShadowVolumes::renderMaps(const ShadowFrame& frame) {
         }
         mask_.shadowWhereStencilNonZero();
     }
+    cache_.releaseScratch();
 }
 
 void ShadowVolumes::bindLookup(const gl::Program& lighting) const {

@@ -49,12 +49,12 @@ VolumeCache::Entry* VolumeCache::still(std::size_t light, std::size_t object, co
     return nullptr;
 }
 
-void VolumeCache::capture(Capture& capture, const std::function<void()>& draw) {
+void VolumeCache::capture(Capture& capture, std::size_t mostTriangles, const std::function<void()>& draw) {
+    const std::size_t room = std::max<std::size_t>(mostTriangles, 1) * 3 * kStride;
+    if (scratch_.size() < room) scratch_ = gl::Buffer(room, nullptr, 0);
     glEnable(GL_RASTERIZER_DISCARD);
-    // Strips come out as separate triangles; the first run only counts them, to size the buffer.
-    const GLuint64 triangles = counted(GL_PRIMITIVES_GENERATED, draw);
-    capture.buffer = gl::Buffer(static_cast<std::size_t>(std::max<GLuint64>(triangles, 1)) * 3 * kStride, nullptr, 0);
-    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, capture.buffer.id());
+    glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, scratch_.id(), 0, static_cast<GLsizeiptr>(room));
+    // Strips are written as separate triangles, and counted so.
     const GLuint64 written = counted(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, [&] {
         glBeginTransformFeedback(GL_TRIANGLES);
         draw();
@@ -62,6 +62,9 @@ void VolumeCache::capture(Capture& capture, const std::function<void()>& draw) {
     });
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
     glDisable(GL_RASTERIZER_DISCARD);
+    const std::size_t bytes = static_cast<std::size_t>(written) * 3 * kStride;
+    capture.buffer = gl::Buffer(std::max<std::size_t>(bytes, kStride), nullptr, 0);
+    if (bytes > 0) glCopyNamedBufferSubData(scratch_.id(), capture.buffer.id(), 0, 0, static_cast<GLsizeiptr>(bytes));
     capture.vertices = static_cast<int>(written * 3);
     glVertexArrayVertexBuffer(capture.vao.id(), 0, capture.buffer.id(), 0, kStride);
     capture.vao.attribute(0, 0, 4, 0);
@@ -75,7 +78,7 @@ void VolumeCache::draw(const Capture& capture) {
 }
 
 std::size_t VolumeCache::memoryBytes() const {
-    std::size_t bytes = 0;
+    std::size_t bytes = scratch_.size();
     for (const Entry& e : entries_) bytes += e.sides.buffer.size() + e.caps.buffer.size();
     return bytes;
 }

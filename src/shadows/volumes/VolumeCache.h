@@ -46,14 +46,20 @@ public:
     // equal); otherwise nullptr, and the entry starts over from `key`.
     Entry* still(std::size_t light, std::size_t object, const Key& key);
     // Captures what `draw` makes the bound volume program emit (its uniforms set by the caller)
-    // into `capture`, with the rasteriser off.
-    static void capture(Capture& capture, const std::function<void()>& draw);
+    // into `capture`, with the rasteriser off. `mostTriangles`: at most how many it can emit
+    // (6 per triangle drawn for sides, 2 for caps): the capture goes to a scratch buffer that
+    // size, then what was written is copied into a buffer of its own, exactly as large.
+    void capture(Capture& capture, std::size_t mostTriangles, const std::function<void()>& draw);
+    // Lets the scratch buffer go: call once a frame's captures are done (a still scene captures
+    // once, so holding the room would only cost memory).
+    void releaseScratch() { scratch_ = gl::Buffer(); }
     // Draws a capture with volume_kept.vert's program bound.
     static void draw(const Capture& capture);
     std::size_t memoryBytes() const;
 
 private:
     std::size_t lights_ = 0, objects_ = 0;
+    gl::Buffer scratch_;  // room for this frame's largest capture so far
     std::vector<Entry> entries_;  // light-major
 };
 
