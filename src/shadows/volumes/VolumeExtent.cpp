@@ -24,7 +24,7 @@ VolumeExtent::VolumeExtent(const scene::Light& light, const scene::Bounds& scene
     const float diagonal = glm::length(sceneBounds.extent());
     const float lightDistance = point ? glm::length(light.position - sceneBounds.center()) : 0.0f;
     extrusion_ = powerOfTwoAbove(2.0f * (diagonal + lightDistance));
-    margin_ = powerOfTwoAbove(0.005f * diagonal);  // 0.5-1 % of the diagonal
+    margin_ = powerOfTwoAbove(std::max(0.005f * diagonal, 1e-4f));  // 0.5-1 % of the diagonal
     if (point) return;
     // A sun's volumes end on a plane past the scene's farthest corner along the light, at least.
     const glm::vec3 d(light_);
