@@ -59,6 +59,10 @@ if [ -f bench/assets/dragon_vrip.ply ]; then
 else
     echo "=== dragon: skipped (bench/assets/dragon_vrip.ply missing: scripts/fetch-assets.sh)" >>"$log"
 fi
+# Shadow volumes on models as they come: kept across frames (VolumeCache) against made through the
+# geometry shader every frame (--redraw-shadow-maps).
+step "street, shadow volumes" 60 penumbra bench scenes/street.json --techniques hard,shadow-volumes --size 1920x1080 --fixed-camera "${short[@]}" --out "$work/street-volumes"
+long_step "street, shadow volumes made every frame" 60 penumbra bench scenes/street.json --techniques hard,shadow-volumes --size 1920x1080 --fixed-camera --redraw-shadow-maps "${short[@]}" --out "$work/street-volumes-redrawn"
 step "glass scene" 60 penumbra bench scenes/glass.json --techniques none,hard,cssm2,cssm1 "${short[@]}" --out "$work/glass"
 step "floor" 60 penumbra bench --suite floor --calibrate "${short[@]}" --out "$work/floor"
 long_step "texel scaling" 80 penumbra bench --techniques hard --shadow-res 1024,2048,4096,8192 --size 1920x1080 --redraw-shadow-maps "${short[@]}" --out "$work/texels"
