@@ -18,8 +18,8 @@ namespace penumbra::shadows {
 // counted per pixel in the stencil buffer: z-fail with capped volumes for casters whose volume
 // the near plane may cut (NearClipVolume), z-pass for the rest. Exact per pixel, any light type.
 // Open, non-manifold or inconsistently wound parts cast from both sides of every triangle, as
-// the reference sees them, at up to twice the fill. A sun's volumes end on a plane just past
-// what their caster can shadow (VolumeExtent); still casters under still lights keep their
+// the reference sees them, at up to twice the fill. Each caster's volume ends on a plane just
+// past what it can shadow (VolumeExtent); still casters under still lights keep their
 // volumes across frames (VolumeCache), and only the counting follows the camera. Translucent
 // casters tint through the shared per-light maps and alpha-tested holes are not seen (the volume
 // is the geometry).
@@ -52,7 +52,7 @@ private:
     struct Caster {
         const scene::Object* object;
         glm::mat4 model;
-        glm::vec4 farPlane;  // a sun's: the plane its volume ends on (VolumeExtent)
+        glm::vec4 farPlane;  // the plane its volume ends on (VolumeExtent::farPlane; n = 0: the fixed push)
     };
     VolumeExtent setLight(const ShadowFrame& frame, const scene::Light& light);
     std::array<std::vector<Caster>, 2> castersByCounting(const ShadowFrame& frame, const scene::Light& light, const VolumeExtent& extent) const;
