@@ -23,6 +23,8 @@ uniform int uTranslucentPass;  // 1: dual-source output of transmittance for ble
 uniform int uOutputMode;       // 0 shaded, 1 visibility of uDebugLight, 2 world position, 3 normal,
                                // 4 unshadowed light from uDebugLight, 5 ambient term
 uniform int uDebugLight;
+uniform int uShowBehind;  // 1: show the nearest surface behind uBehindDepth's (Renderer::showBehind)
+layout(binding = kUnitBehindDepth) uniform sampler2D uBehindDepth;
 #endif
 
 // Translucent output, chosen by the renderer's transparency mode (Mátl 2013 ch. 3):
@@ -138,6 +140,11 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
 }
 
 void main() {
+#ifdef DEBUG_OUTPUT
+    // Both frames draw every surface through the same invariant transform (lighting.vert), so the
+    // nearest surface's own fragments land on its depth to the bit and `<=` peels exactly it.
+    if (uShowBehind != 0 && gl_FragCoord.z <= texelFetch(uBehindDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
+#endif
 #ifdef TRANSLUCENT_PEEL
     // Keep only the nearest surface behind the previous layer (strictly), in front of the opaque.
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -43,11 +43,16 @@ std::string safeName(std::string s) {
     return s;
 }
 
+reference::Surfaces surfacesOf(const ReportJob& job) {
+    if (job.behindGlass) return reference::Surfaces::BehindGlass;
+    return job.translucentReceivers ? reference::Surfaces::Nearest : reference::Surfaces::NearestOpaque;
+}
+
 }  // namespace
 
 int runReference(const ReportJob& job) {
     Session s = open(job);
-    Comparison cmp(s.scene, job.width, job.height, job.time, job.translucentReceivers);
+    Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
     cmp.traceReference(job.samples, true);
     util::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
     json lights = json::array();
@@ -74,7 +79,7 @@ int runCompare(const ReportJob& job) {
             throw std::invalid_argument("unknown shadow technique '" + t + "'; known: " + shadows::knownTechniqueNames());
     if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
     Session s = open(job);
-    Comparison cmp(s.scene, job.width, job.height, job.time, job.translucentReceivers);
+    Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
     cmp.setRenderOptions(job.render);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());
@@ -131,7 +136,9 @@ int runCompare(const ReportJob& job) {
               {{"device", platform::glDeviceDescription()}, {"scene", job.scene.string()}, {"width", job.width},
                {"height", job.height}, {"time", job.time}, {"samples", job.samples},
                {"shadow_resolution", job.render.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},
-               {"wrong_threshold", VisibilityError::kWrongThreshold}, {"techniques", rows}});
+               {"wrong_threshold", VisibilityError::kWrongThreshold},
+               {"surfaces", job.behindGlass ? "behind glass" : job.translucentReceivers ? "nearest" : "nearest opaque"},
+               {"techniques", rows}});
     std::printf("\nreference %.2f s; errors are of light visibility on pixels each light reaches; wrong = off by > %.1f\n",
                 cmp.referenceSeconds(), VisibilityError::kWrongThreshold);
     std::printf("wrote %s/{compare.json, reference.png, side_by_side.png, <technique>.png, <technique>_heat.png}\n",

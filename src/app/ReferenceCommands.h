@@ -22,7 +22,8 @@ struct ReportJob {
     int timedFrames = 3;
     int motionFrames = 0;                // > 1: also score a slow pan (Comparison::evaluateMotion)
     float motionPixelsPerFrame = 0.5f;
-    bool translucentReceivers = false;  // score the nearest surface, translucent ones too (Comparison)
+    bool translucentReceivers = false;  // score the nearest surface, translucent ones too (reference::Surfaces)
+    bool behindGlass = false;           // score the surface seen through the nearest translucent one
 };
 
 // Writes reference.png, visibility_<i>.png per light and reference.json. Returns exit code.

@@ -115,8 +115,12 @@ int main(int argc, char** argv) {
         sub->add_option("--time", report.time, "scene time of the frame, seconds");
         sub->add_option("--samples", report.samples, "samples per pixel for area lights (default 64)")->check(CLI::Range(1, 65536));
         app::addEglPlatform(*sub, report.eglPlatform);
-        sub->add_flag("--translucent-receivers", report.translucentReceivers,
-                      "score the nearest surface, translucent ones too (default: the nearest opaque surface)");
+        auto* nearest = sub->add_flag("--translucent-receivers", report.translucentReceivers,
+                                      "score the nearest surface, translucent ones too (default: the nearest opaque surface)");
+        sub->add_flag("--behind-glass", report.behindGlass,
+                      "score the surface seen through the nearest one, where that one is translucent (a glass box's far "
+                      "side, the floor under a pane); other pixels are left out")
+            ->excludes(nearest);
     }
     ref->add_option("--out", report.outDir, "output directory (default ./reference)");
     cmp->add_option("--out", report.outDir, "output directory (default ./compare)");

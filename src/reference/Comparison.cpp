@@ -32,17 +32,20 @@ std::vector<glm::vec3> Comparison::capture(render::Renderer& renderer, OutputMod
     return out;
 }
 
-Comparison::Comparison(scene::Scene& scene, int width, int height, float time, bool translucentReceivers)
-    : scene_(scene), width_(width), height_(height), time_(time), translucentReceivers_(translucentReceivers) {
+Comparison::Comparison(scene::Scene& scene, int width, int height, float time, Surfaces surfaces)
+    : scene_(scene), width_(width), height_(height), time_(time), surfaces_(surfaces) {
     if (scene.lights.empty()) throw InputError(scene.source, "the scene has no lights: there are no shadows to compare");
-    render::RenderOptions options;
-    options.technique = "none";
-    options.debugTranslucent = translucentReceivers;
-    render::Renderer renderer(scene, options);
+    render::Renderer renderer(scene, optionsFor("none", 0, {}));
     points_.width = width;
     points_.height = height;
     points_.covered.assign(static_cast<std::size_t>(width) * height, false);
+    std::vector<bool> throughGlass;
+    if (surfaces == Surfaces::BehindGlass) {
+        throughGlass = captureNearestDepth(renderer);
+        renderer.showBehind(&nearestDepth_);
+    }
     points_.position = capture(renderer, OutputMode::WorldPosition, 0);
+    for (std::size_t i = 0; i < throughGlass.size(); ++i) points_.covered[i] = points_.covered[i] && throughGlass[i];
     points_.normal = capture(renderer, OutputMode::Normal, 0);
     ambient_ = capture(renderer, OutputMode::Ambient, 0);
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
@@ -54,6 +57,28 @@ Comparison::Comparison(scene::Scene& scene, int width, int height, float time, b
         }
         lit_.push_back(std::move(lit));
     }
+}
+
+// The window depth of the nearest surface, kept for Renderer::showBehind, and the pixels where
+// that surface is translucent (the nearest opaque one lies farther).
+std::vector<bool> Comparison::captureNearestDepth(render::Renderer& renderer) {
+    const std::size_t count = static_cast<std::size_t>(width_) * height_;
+    std::vector<float> opaque(count), nearest(count);
+    for (std::vector<float>* depth : {&opaque, &nearest}) {
+        renderer.options().debugTranslucent = depth == &nearest;
+        captureFrom(renderer, scene_.camera, OutputMode::WorldPosition, 0);
+        const gl::Texture& frameDepth = renderer.cameraDepth();
+        glGetTextureImage(frameDepth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
+                          depth->data());
+        if (depth != &nearest) continue;
+        nearestDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, width_, height_);
+        nearestDepth_.setFilter(GL_NEAREST, GL_NEAREST);
+        glCopyImageSubData(frameDepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, nearestDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, width_,
+                           height_, 1);
+    }
+    std::vector<bool> translucent(count);
+    for (std::size_t i = 0; i < count; ++i) translucent[i] = nearest[i] < opaque[i];
+    return translucent;
 }
 
 void Comparison::traceReference(int samples, bool showProgress, const Progress& onProgress) {
@@ -72,12 +97,11 @@ void Comparison::traceReference(int samples, bool showProgress, const Progress& 
     referenceSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-namespace {
-
-render::RenderOptions optionsFor(render::RenderOptions options, const std::string& technique, int shadowResolution,
-                                 const shadows::ParameterValues& parameters, bool translucentReceivers) {
+render::RenderOptions Comparison::optionsFor(const std::string& technique, int shadowResolution,
+                                             const shadows::ParameterValues& parameters) const {
+    render::RenderOptions options = base_;
     options.technique = technique;
-    options.debugTranslucent = translucentReceivers;
+    options.debugTranslucent = surfaces_ != Surfaces::NearestOpaque;
     options.shadowResolution = shadowResolution;
     options.parameters = parameters;
     options.output = render::OutputMode::Shaded;  // each capture sets its own
@@ -86,14 +110,13 @@ render::RenderOptions optionsFor(render::RenderOptions options, const std::strin
     return options;
 }
 
-}  // namespace
-
 TechniqueScore Comparison::evaluate(const std::string& technique, int shadowResolution, int timedFrames,
                                     const shadows::ParameterValues& parameters) {
     TechniqueScore score;
     score.name = technique;
     score.shadowResolution = shadowResolution;
-    render::Renderer renderer(scene_, optionsFor(base_, technique, shadowResolution, parameters, translucentReceivers_));
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));
+    if (surfaces_ == Surfaces::BehindGlass) renderer.showBehind(&nearestDepth_);
 
     // Cost of the technique's real frames (shaded, translucency and fog included).
     render::OffscreenTarget target(width_, height_);
@@ -147,7 +170,7 @@ constexpr float kCrawlThreshold = 8.0f / 255.0f;
 
 MotionScore Comparison::evaluateMotion(const std::string& technique, int shadowResolution, int frames,
                                        float pixelsPerFrame, const shadows::ParameterValues& parameters) {
-    render::Renderer renderer(scene_, optionsFor(base_, technique, shadowResolution, parameters, translucentReceivers_));
+    render::Renderer renderer(scene_, optionsFor(technique, shadowResolution, parameters));  // no showBehind: the camera moves
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const scene::Camera& start = scene_.camera;
     const glm::vec3 forward = glm::normalize(start.target - start.position);

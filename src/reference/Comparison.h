@@ -39,12 +39,21 @@ struct MotionScore {
     std::size_t pixels = 0;
 };
 
+// Which surface of each pixel a Comparison scores.
+enum class Surfaces {
+    NearestOpaque,  // the nearest opaque surface (what lies behind glass, the glass left out)
+    Nearest,        // the nearest surface, translucent ones too: scored by the light reaching them
+    // The surface seen through the nearest one, at the pixels whose nearest surface is translucent
+    // (a glass box's far side through its near side, the floor through a pane): the light reaching
+    // the second surface along the view. The motion score (evaluateMotion) scores Nearest instead.
+    BehindGlass,
+};
+
 class Comparison {
 public:
-    // Captures the G-buffer, ambient term and each light's unshadowed contribution, of the
-    // nearest opaque surface, or with `translucentReceivers` of the nearest surface (translucent
-    // ones are then scored by the light reaching them). Throws InputError when the scene has no lights.
-    Comparison(scene::Scene& scene, int width, int height, float time, bool translucentReceivers = false);
+    // Captures the G-buffer, ambient term and each light's unshadowed contribution of the surfaces
+    // `surfaces` names. Throws InputError when the scene has no lights.
+    Comparison(scene::Scene& scene, int width, int height, float time, Surfaces surfaces = Surfaces::NearestOpaque);
 
     // Ray-traces every light's visibility (samples per pixel for area lights). `onProgress`, if
     // set, hears the share done over all lights (0..1) from a worker thread now and then. No GL:
@@ -83,10 +92,15 @@ private:
     std::vector<glm::vec3> capture(render::Renderer& renderer, render::OutputMode mode, int light);
     std::vector<glm::vec4> captureFrom(render::Renderer& renderer, const scene::Camera& camera,
                                        render::OutputMode mode, int light);
+    render::RenderOptions optionsFor(const std::string& technique, int shadowResolution,
+                                     const shadows::ParameterValues& parameters) const;
+    // BehindGlass: keeps the nearest surface's depth and returns which pixels it is translucent at.
+    std::vector<bool> captureNearestDepth(render::Renderer& renderer);
     scene::Scene& scene_;
     int width_, height_;
     float time_;
-    bool translucentReceivers_;
+    Surfaces surfaces_;
+    gl::Texture nearestDepth_;  // BehindGlass: the nearest surface's window depth (Renderer::showBehind)
     render::RenderOptions base_;
     SurfacePoints points_;
     std::vector<glm::vec3> ambient_;

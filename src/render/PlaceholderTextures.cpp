@@ -48,6 +48,7 @@ void PlaceholderTextures::bindAll() const {
     whiteArray_.bind(gpu::kUnitScreenShadow);
     whiteArray_.bind(gpu::kUnitDepthTiles);
     white3D_.bind(gpu::kUnitJitter);
+    white2D_.bind(gpu::kUnitBehindDepth);
 }
 
 }  // namespace penumbra::render

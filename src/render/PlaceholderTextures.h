@@ -13,7 +13,7 @@ class PlaceholderTextures {
 public:
     PlaceholderTextures();
     // Binds a placeholder to every unit below gpu::kUnitDualDepth (the units above belong to the
-    // camera-transparency passes, which bind their own).
+    // camera-transparency passes, which bind their own), and to the debug channels' kUnitBehindDepth.
     void bindAll() const;
 
 private:

@@ -444,8 +444,11 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     program.set("uTranslucentPass", translucent ? 1 : 0);
     program.set("uOutputMode", static_cast<int>(options_.output));
     program.set("uDebugLight", options_.debugLight);
+    const bool behind = behind_ && options_.output != OutputMode::Shaded;
+    program.set("uShowBehind", behind ? 1 : 0);
     if (fogInShading()) setFogUniforms(program, camera, aspect);
     placeholders_.bindAll();
+    if (behind) behind_->bind(gpu::kUnitBehindDepth);
     if (fogDepth_) fogDepth_->bind(gpu::kUnitOpaqueDepth);
     technique_->bindLookup(program);
     int projector = 0;

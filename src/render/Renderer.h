@@ -122,6 +122,13 @@ public:
     // active when the new one fails.
     void setTechnique(const std::string& name);
     void setOutputMode(OutputMode mode, int debugLight = 0);
+    // Debug channels show the nearest surface strictly behind `nearest`'s window depth (a depth
+    // texture of the frame's size, from cameraDepth() of a frame drawn from the same camera): the
+    // surface seen through the nearest translucent one (compare --behind-glass). nullptr: the
+    // nearest surface, as usual. Shaded frames ignore it.
+    void showBehind(const gl::Texture* nearest) { behind_ = nearest; }
+    // The last frame's camera depth (window depth, GL_DEPTH_COMPONENT32F, the frame's size).
+    const gl::Texture& cameraDepth() const { return depth_; }
     // Anisotropic filtering of the scene's textures, 1-16 (RenderOptions::anisotropy).
     void setAnisotropy(int anisotropy);
     // Seed 002's combined technique (render/RegionView.h): `own[i]` says whether this renderer
@@ -285,6 +292,7 @@ private:
     // Float HDR colour (made for frames that resolve it) + depth; 32-bit so that debug channels
     // (positions) keep their precision.
     gl::Texture hdr_, depth_;
+    const gl::Texture* behind_ = nullptr;  // showBehind
     gl::Framebuffer hdrFbo_;
     SrgbTarget srgb_;  // where the frame goes when it skips the float target
     bool srgbFrame_ = false;  // the last frame did

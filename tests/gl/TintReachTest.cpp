@@ -226,7 +226,7 @@ TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeL
 // differing. Footprints 12 texels short of the bilinear tint's reach put it at 0.0568 and 0.78 %.
 TEST(TintReachTranslucent, TheSplitIsNoFartherFromTheReferenceThanTheWholeLookup) {
     scene::Scene s = glassReceivers();
-    reference::Comparison cmp(s, 320, 200, 0.0f, /*translucentReceivers=*/true);
+    reference::Comparison cmp(s, 320, 200, 0.0f, reference::Surfaces::Nearest);
     cmp.traceReference(1, false);
     render::RenderOptions reached;
     reached.transparency = render::TransparencyMode::SortedObjects;

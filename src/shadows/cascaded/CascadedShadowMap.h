@@ -17,9 +17,8 @@ public:
     std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
     // The coloured tint is the plain tint maps' (plainMapTint in shadow_filtering.glsl), read at the
-    // receiver's texel as hard's: the default tint reach. Glass receivers with every other layer on
-    // one side of them get hard's builds for that (ShadowTechnique::ownLayersBuild).
-    bool ownLayersBuild() const override { return true; }
+    // receiver's texel as hard's: the default tint reach, and the default own-layers builds
+    // (ShadowTechnique::ownLayersBuild) for glass receivers with every other layer on one side.
     // One texel compared at the receiver's own depth, in the coarsest cascade's texels
     // (reachInPlainTexels, set by renderMaps). Other lights' hard lookups reach less.
     float shadowReachTexels() const override { return reachTexels_; }

@@ -21,5 +21,5 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i)
             lit += ((i == 0 && j == 0) ? centre : ring) * compareAt(s, vec2(i, j) * uSpacingTexels, 0.0);
-    return lit / 9.0 * tintAt(s);
+    return lit / 9.0 * plainMapTint(s, NdotL);
 }

@@ -9,9 +9,6 @@ class HardShadowMap final : public SharedMapTechnique {
 public:
     std::string name() const override { return "hard"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/hard/lookup.glsl"; }
-    // Glass receivers with every other layer on one side of them (ShadowTechnique::ownLayersBuild):
-    // builds that read their own layers in front alone, or divide them out of the tint.
-    bool ownLayersBuild() const override { return true; }
     // The texel the comparison reads, and the tint's.
     float shadowReachTexels() const override { return kPlainCompareReachTexels; }
     float shadowReachDepth() const override { return 0.0f; }  // its own depth, compared at one texel

@@ -58,5 +58,5 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     } else {
         lit = 1.0 - momentShadowIntensity(m, t);
     }
-    return lit * tintAt(s);
+    return lit * plainMapTint(s, NdotL);
 }

@@ -102,5 +102,5 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     if (!s.inside) return vec3(1.0);
     float radius = uRadiusWorld > 0.0 ? uRadiusWorld / s.texelWorld : uRadiusTexels;
-    return percentageCloser(s, radius) * tintAt(s);
+    return percentageCloser(s, radius) * plainMapTint(s, NdotL);
 }

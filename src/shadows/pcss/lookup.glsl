@@ -73,7 +73,7 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
             ++blockers;
         }
     }
-    if (agreed < 0.0 && blockers == 0) return tintAt(s);
+    if (agreed < 0.0 && blockers == 0) return plainMapTint(s, NdotL);
 
     // 2. Penumbra estimate from the average blocker depth; 3. PCF of that width.
     float blocker = blockerSum / float(blockers);
@@ -86,5 +86,5 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
         if (filterAgreed >= 0.0) { lit = filterAgreed * float(uFilterTaps); break; }
         lit += compareAt(s, nextSpiralTap(filterDisk, i), 0.0);
     }
-    return lit / float(uFilterTaps) * tintAt(s);
+    return lit / float(uFilterTaps) * plainMapTint(s, NdotL);
 }

@@ -18,9 +18,8 @@ public:
     std::filesystem::path lookupShader() const override { return "src/shadows/warped/lookup.glsl"; }
     void renderMaps(const ShadowFrame& frame) override;
     // The coloured tint is the plain tint maps' (plainMapTint in shadow_filtering.glsl), read at the
-    // receiver's texel as hard's: the default tint reach. Glass receivers with every other layer on
-    // one side of them get hard's builds for that (ShadowTechnique::ownLayersBuild).
-    bool ownLayersBuild() const override { return true; }
+    // receiver's texel as hard's: the default tint reach, and the default own-layers builds
+    // (ShadowTechnique::ownLayersBuild) for glass receivers with every other layer on one side.
     // One texel compared at the receiver's own depth, in the coarsest texel of the warped maps on
     // the camera's body (reachInPlainTexels, set by fitViews; none while frozen).
     float shadowReachTexels() const override { return reachTexels_; }

@@ -6,7 +6,7 @@
 
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite site = shadowSite(light, P, N, NdotL);
-    vec3 tint = site.inside ? tintAt(site) : vec3(1.0);
+    vec3 tint = plainMapTint(site, NdotL);
     float v = screenMaskVisibility(light);
     if (v < 0.0) return site.inside ? compareAt(site, vec2(0.0), 0.0) * tint : vec3(1.0);
     return v * tint;
