@@ -7,6 +7,7 @@
 #include "render/Offscreen.h"
 #include "scene/io/SceneFile.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -48,11 +49,20 @@ reference::Surfaces surfacesOf(const ReportJob& job) {
     return job.translucentReceivers ? reference::Surfaces::Nearest : reference::Surfaces::NearestOpaque;
 }
 
+// --behind-glass on a view without glass scores nothing: said, so that zeros are not read as exact.
+void warnIfNothingBehindGlass(const ReportJob& job, const Comparison& cmp, const char* command) {
+    const std::vector<bool>& covered = cmp.surfaces().covered;
+    if (job.behindGlass && std::none_of(covered.begin(), covered.end(), [](bool c) { return c; }))
+        std::fprintf(stderr, "penumbra %s: --behind-glass: no pixel's nearest surface is translucent in this view; nothing is scored\n",
+                     command);
+}
+
 }  // namespace
 
 int runReference(const ReportJob& job) {
     Session s = open(job);
     Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
+    warnIfNothingBehindGlass(job, cmp, "reference");
     cmp.traceReference(job.samples, true);
     util::writePng(job.outDir / "reference.png", job.width, job.height, cmp.shade(cmp.referenceVisibility()));
     json lights = json::array();
@@ -80,6 +90,7 @@ int runCompare(const ReportJob& job) {
     if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
     Session s = open(job);
     Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
+    warnIfNothingBehindGlass(job, cmp, "compare");
     cmp.setRenderOptions(job.render);
     cmp.traceReference(job.samples, true);
     const auto referenceImage = cmp.shade(cmp.referenceVisibility());

@@ -324,8 +324,24 @@ TintSides footprintSides(const gpu::LightData& light, const OrientedBox& caster,
             return std::max(q.x, std::max(q.y, q.z));
         });
         if (range.empty()) return sides;
-        // Beyond a box is no half-space: short of the caster, all of the footprint (conservative).
-        if (notInFront) sides.notInFront = footprintIn(volume, receiver, nullptr);
+        if (notInFront) {
+            // Short of the caster is the box of half-size `limit` around the light; beyond it lies
+            // the union of six half-spaces, one per axis and side: the footprint's part in each.
+            const float n = light.positionNear.w, f = light.directionFar.w;
+            float least = range.least;
+            if (depthReach > 0.0f) {  // the cube face's view depth whose window depth is depthReach short
+                const float window = f / (f - n) - f * n / ((f - n) * least) - depthReach;
+                least = window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
+            }
+            const float limit = least / (1.0f + margin);
+            for (int axis = 0; axis < 3; ++axis)
+                for (const float side : {-1.0f, 1.0f}) {
+                    glm::vec3 normal(0.0f);
+                    normal[axis] = side;  // side * (x - p) >= limit along the axis
+                    const Plane cut{normal, -side * p[axis] - limit};
+                    sides.notInFront.add(footprintIn(volume, receiver, &cut));
+                }
+        }
         if (!notBehind) return sides;
         const float limit = (1.0f + margin) * range.most;
         scene::Bounds world;  // (a turned receiver: its world box, conservatively)

@@ -101,8 +101,9 @@ scene::Bounds tintFootprintNotBehind(const gpu::LightData& light, const Oriented
 // caster: beyond the least light depth of the caster's part in the receiver's shadow volume, less
 // the same tolerance. Elsewhere in the footprint the caster's layers all lie behind the receiver,
 // so they put no colour on it: a translucent receiver there is reached by no layer but its own
-// (ShadowTechnique::ownLayersBuild). Point lights: the whole footprint (short of a box around the
-// light is no half-space).
+// (ShadowTechnique::ownLayersBuild). Point lights: short of the caster is a box around the light
+// (a cube map's depth is the largest axis distance), so the footprint's parts in the six
+// half-spaces beyond its faces (until stop 62 the whole footprint).
 scene::Bounds tintFootprintNotInFront(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver,
                                       float padTexels, SideTolerance tolerance = SideTolerance::Surface);
 

@@ -228,8 +228,8 @@ public:
     // the tint with their own layers divided out), without what sorts out layers on both sides.
     // The renderer draws with them where render/TintReach.h shows that side for every other caster
     // (tintFootprintNotInFront, tintFootprintNotBehind). A lookup that reads the plain tint maps
-    // through plainMapTint (shadow_filtering.glsl) has them: every technique but CSSM's thesis
-    // method. Until stop 62 only hard and the view-dependent ones said so, and the PCF family, PCSS,
+    // through plainMapTint (shadow_filtering.glsl) has them: every technique but CSSM without its
+    // tint map. Until stop 62 only hard and the view-dependent ones said so, and the PCF family, PCSS,
     // distance, the moment maps, shadow volumes and planar shadows gave a pane's far side, seen
     // through its near side, the tint of every layer at its texels, those behind it too
     // (`compare --behind-glass`: 16.6 % wrong on scenes/glass.json, now 0.28 %).

@@ -21,3 +21,24 @@ endif()
 if(NOT out MATCHES "technique +RMSE +wrong %")
   message(FATAL_ERROR "no table printed")
 endif()
+
+# --behind-glass scores the surface seen through the default scene's pane, and says so where a
+# view holds no glass (the zeros it prints then are not a score).
+execute_process(COMMAND "${PENUMBRA}" compare --behind-glass --techniques hard --size 160x90 --timed-frames 1 --out "${OUT}/behind"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "penumbra compare --behind-glass exited with ${rc}: ${err}")
+endif()
+file(READ "${OUT}/behind/compare.json" j)
+string(JSON surfaces GET "${j}" surfaces)
+string(JSON behind_pixels GET "${j}" techniques 0 compared_pixels)
+if(NOT surfaces STREQUAL "behind glass" OR NOT behind_pixels GREATER 100)
+  message(FATAL_ERROR "--behind-glass scored '${surfaces}' on ${behind_pixels} pixels; the default scene's pane shows more")
+endif()
+file(WRITE "${OUT}/no_glass.json" [=[{ "lights": [ { "type": "directional", "direction": [0.3, -1, 0.2] } ],
+  "objects": [ { "shape": "plane", "size": [8, 8] }, { "shape": "box", "position": [0, 0.5, 0] } ] }]=])
+execute_process(COMMAND "${PENUMBRA}" compare "${OUT}/no_glass.json" --behind-glass --techniques hard --size 64x36 --timed-frames 1
+  --out "${OUT}/no_glass" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "no pixel's nearest surface is translucent")
+  message(FATAL_ERROR "--behind-glass without glass in view: exit ${rc}, stderr '${err}'")
+endif()

@@ -155,9 +155,10 @@ scene::Scene glassReceivers() {
 // own layers alone, and every layer of the upper one in front of the lower, which takes the
 // division. The upper one's underside receives the light its top face lets through, t; the lower
 // one's top face that of both of the upper one's faces, t². The whole lookups (hard's and CSSM's)
-// give the upper underside about 1 here: with the lower slab behind, the farthest layer at its
-// texels is not its own, and the bias lands its lookup in front of its own top face (with the
-// upper slab alone they give t, as the split does with or without the lower one).
+// gave the upper underside about 1 here until stop 62: with the lower slab behind, the farthest
+// layer at its texels is not its own, and the bias lands its lookup in front of its own top face
+// (with the upper slab alone they give t, as the split does with or without the lower one). They
+// are now bounded by the receiver's own layers in front (plainMapTint, CSSM's shadowVisibility).
 TEST(TintReachTranslucent, StackedSlabsGetTheLightTheirLayersInFrontLetThrough) {
     const glm::vec3 t(0.1f, 0.9f, 0.1f);
     for (const char* technique : {"hard", "cssm2", "cssm1"})
@@ -213,40 +214,59 @@ TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeL
             // Measured: hard 21 (nearest-texel rims); cssm 55-59 since the box filters' reach is the
             // bilinear tint's 2 texels (7-9 with 18, where the whole lookup's rim counts spread
             // another layer's shadow onto a receiver: closer to the reference without, see below);
-            // 180-563 with each of the faults above.
-            EXPECT_LE(off, 64u) << technique;
+            // 180-563 with each of the faults above. Since stop 62 a point light's cut lets the glass
+            // scene's panes' far sides, seen through their near sides, take the build for their own
+            // layers alone, where the whole lookup reads the layers behind them too: hard 322 pixels
+            // (at most 4/255 off, since its whole lookup is bounded by those own layers), cssm 329-349.
+            // The reference decides there, and the split is the nearer (below); the pane-and-block
+            // scene, without a point light, keeps the rims' bound (hard 0, cssm 20-27).
+            EXPECT_LE(off, glass ? 400u : 64u) << technique;
         }
 }
 
-// Where CSSM's split and its whole lookup differ on translucent receivers (their rims as the light
-// sees them), the split is no farther from the ray-traced truth: the whole lookup's count of the
-// receiver's own tile spreads another layer's shadow up to 7 texels onto a rim, which the builds
-// for one side leave out. Measured (llvmpipe, 320 x 200, translucent receivers scored by the light
-// reaching them): RMSE 0.0249494 against 0.0249497, wrong 0.3856 % either way, 6,351 pixel-lights
-// differing. Footprints 12 texels short of the bilinear tint's reach put it at 0.0568 and 0.78 %.
+// Where the split and the whole lookup differ on translucent receivers (their rims as the light
+// sees them, and since stop 62 the panes' far sides under the point light), the split is no farther
+// from the ray-traced truth, on the nearest surfaces and on those seen through glass. CSSM's whole
+// lookup's count of the receiver's own tile spreads another layer's shadow up to 7 texels onto a
+// rim, which the builds for one side leave out. Measured (llvmpipe, 320 x 200), RMSE / wrong, split
+// against whole: nearest surfaces cssm2 0.0249557 / 0.3874 % against 0.0249562 / 0.3874 % (8,553
+// pixel-lights differing), hard 0.0285447 / 0.1882 % against 0.0285451 / 0.1882 %; behind glass
+// hard 0.0330 / 0.59 % against 0.1253 / 9.81 %, cssm2 0.0298 / 0.545 % against 0.0385 / 2.69 % (hard's
+// split 5.5 % and cssm2's 5.9 % before the own-layers bound, plainMapTint and CSSM's
+// shadowVisibility; hard's 12.2 % before the point light's cut too). Footprints 12 texels short of
+// the bilinear tint's reach put cssm2's nearest-surface figures at 0.0568 and 0.78 %.
 TEST(TintReachTranslucent, TheSplitIsNoFartherFromTheReferenceThanTheWholeLookup) {
     scene::Scene s = glassReceivers();
-    reference::Comparison cmp(s, 320, 200, 0.0f, reference::Surfaces::Nearest);
-    cmp.traceReference(1, false);
-    render::RenderOptions reached;
-    reached.transparency = render::TransparencyMode::SortedObjects;
-    render::RenderOptions everywhere = reached;
-    everywhere.tintOnlyWhereReached = false;
-    cmp.setRenderOptions(reached);
-    const auto split = cmp.evaluate("cssm2", 0, 0);
-    cmp.setRenderOptions(everywhere);
-    const auto whole = cmp.evaluate("cssm2", 0, 0);
-    std::size_t differ = 0;
-    for (std::size_t l = 0; l < split.visibility.size(); ++l)
-        for (std::size_t i = 0; i < split.visibility[l].size(); ++i)
-            differ += glm::length(split.visibility[l][i] - whole.visibility[l][i]) > 1e-4f;
-    std::printf("cssm2, translucent receivers: %zu pixel-lights differ; RMSE split %.7f, whole lookup %.7f; wrong %.4f%% / %.4f%%\n",
-                differ, split.rmse, whole.rmse, 100 * split.wrongShare, 100 * whole.wrongShare);
-    EXPECT_GT(differ, 0u) << "the split must reach the scored renderer";
-    // Margins of 0.1 % of the RMSE and 0.01 % of the pixels, for another driver's rounding at the
-    // rims: far below what a split that loses coloured shadow gives (2.3x and 2x here).
-    EXPECT_LE(split.rmse, whole.rmse * 1.001);
-    EXPECT_LE(split.wrongShare, whole.wrongShare + 1e-4);
+    for (const reference::Surfaces surfaces : {reference::Surfaces::Nearest, reference::Surfaces::BehindGlass}) {
+        reference::Comparison cmp(s, 320, 200, 0.0f, surfaces);
+        cmp.traceReference(1, false);
+        render::RenderOptions reached;
+        reached.transparency = render::TransparencyMode::SortedObjects;
+        render::RenderOptions everywhere = reached;
+        everywhere.tintOnlyWhereReached = false;
+        for (const char* technique : {"hard", "cssm2"}) {
+            cmp.setRenderOptions(reached);
+            const auto split = cmp.evaluate(technique, 0, 0);
+            cmp.setRenderOptions(everywhere);
+            const auto whole = cmp.evaluate(technique, 0, 0);
+            std::size_t differ = 0;
+            for (std::size_t l = 0; l < split.visibility.size(); ++l)
+                for (std::size_t i = 0; i < split.visibility[l].size(); ++i)
+                    differ += glm::length(split.visibility[l][i] - whole.visibility[l][i]) > 1e-4f;
+            const bool behind = surfaces == reference::Surfaces::BehindGlass;
+            std::printf("%s, %s: %zu pixel-lights differ; RMSE split %.7f, whole lookup %.7f; wrong %.4f%% / %.4f%%\n", technique,
+                        behind ? "behind glass" : "translucent receivers", differ, split.rmse, whole.rmse, 100 * split.wrongShare,
+                        100 * whole.wrongShare);
+            EXPECT_GT(split.pixels, 1000u) << technique;
+            if (behind || std::string(technique) == "cssm2") {
+                EXPECT_GT(differ, 0u) << technique << ": the split must reach the scored renderer";
+            }
+            // Margins of 0.1 % of the RMSE and 0.01 % of the pixels, for another driver's rounding at
+            // the rims: far below what a split that loses coloured shadow gives (2.3x and 2x here).
+            EXPECT_LE(split.rmse, whole.rmse * 1.001) << technique;
+            EXPECT_LE(split.wrongShare, whole.wrongShare + 1e-4) << technique;
+        }
+    }
 }
 
 }  // namespace

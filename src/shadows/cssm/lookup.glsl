@@ -407,7 +407,7 @@ vec3 cubeTileSum(ShadowSite s, int side) {
     return sum;
 }
 
-vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
+vec3 stochasticVisibility(int light, vec3 P, vec3 N, float NdotL) {
     ShadowSite s = shadowSite(light, P, N, NdotL);
     // s in texels, and ∂s/∂x, ∂s/∂y, taken before any branch. Cube maps: coordinates along the
     // face's texel steps (tangent, bitangent), not the direction's x, y (constant on some faces).
@@ -491,4 +491,15 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
     // receiver (its depth is nearer the light) for an occluder.
     if (kSeparateOpaque) return compareAt(s, vec2(0.0), 0.0) * coloured;
     return coloured;
+}
+
+vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
+    vec3 visibility = stochasticVisibility(light, P, N, NdotL);
+#if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    // At most the receiver's own layers in front, as plainMapTint bounds the plain tint: the counts
+    // and the tint product of the whole lookup may miss a thin pane's near side in front of its far
+    // side (compare --behind-glass, stop 62).
+    visibility = min(visibility, ownLayersInFront(NdotL));
+#endif
+    return visibility;
 }

@@ -287,6 +287,13 @@ vec3 plainMapTint(ShadowSite s, float NdotL) {
     if (!s.inside) return vec3(1.0);
 #if defined(MATERIAL_TRANSLUCENT) && defined(RECEIVER_UNTINTED) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
     return ownLayersInFront(NdotL);
+#elif defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    // Light reaching a closed part's side turned from the light has crossed one of its own entry
+    // faces at least, and every layer only takes light away: the truth is at most its own layers in
+    // front, per channel, so the bound can only bring the tint nearer it. It mends the whole
+    // lookup on a thin pane's far side, whose lookup the bias lands in front of the pane's near
+    // side, so that it read no layer (1) where the truth is t (compare --behind-glass, stop 62).
+    return min(tintAt(s), ownLayersInFront(NdotL));
 #else
     return tintAt(s);
 #endif
