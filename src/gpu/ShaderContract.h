@@ -53,7 +53,7 @@ GPU_CONST kUnitOpaqueDepth = 31;    // the opaque surfaces' depth
 GPU_CONST kUnitDrawnFarthest2D = 32;  // RG32F, 1 - the farthest translucent layer / entry per texel (translucent receivers)
 GPU_CONST kUnitDrawnFarthestCube = 36;  // the same for point lights (cube maps)
 GPU_CONST kUnitBehindDepth = 38;    // debug channels: the depth of the surface to look behind (compare --behind-glass)
-GPU_CONST kLightingUnits = 38;      // units the lighting shader may read (all unbound before shadow passes)
+GPU_CONST kLightingUnits = 39;      // units the lighting shader may read (all unbound before shadow passes)
 
 // DepthTileBounds: level-0 tiles of kDepthTile^2 texels, each bounding its texels and
 // kDepthTileBorder more on every side; level k: tiles of kDepthTile << k, each bounding one

@@ -307,8 +307,10 @@ TEST(TintReach, AnOpaqueCasterJustBehindAReceiverShadowsItOnlyWithinTheLookupsDe
     const scene::Bounds above = box({-0.5f, 2, -0.5f}, {0.5f, 2.5f, 0.5f}), below = box({-0.5f, 0.4f, -0.5f}, {0.5f, 0.9f, 0.5f});
     // Sun: depth 0..1 spans 100 units, so a reach of 0.01 is 1 unit. Spot at y = 5, near 0.05, far 50:
     // the plate at view depth ~4 lies 0.1 in front of the block at ~4.1; window depths differ by ~3e-4.
-    const gpu::LightData sun = directional({0, -1, 0}, 0.01f), spot = perspective(gpu::kLightSpot, {0, 5, 0}, 1e-3f);
-    for (const gpu::LightData& light : {sun, spot}) {
+    // The point light's cube face below it (y the largest axis distance) has the spot's depths.
+    const gpu::LightData sun = directional({0, -1, 0}, 0.01f), spot = perspective(gpu::kLightSpot, {0, 5, 0}, 1e-3f),
+                         point = perspective(gpu::kLightPoint, {0, 5, 0}, 1e-3f);
+    for (const gpu::LightData& light : {sun, spot, point}) {
         const int type = static_cast<int>(light.colorType.w);
         EXPECT_FALSE(opaqueShadowFootprint(light, above, plate, 2.0f, 0.0f).empty()) << type << ": a caster above shadows the plate";
         EXPECT_TRUE(opaqueShadowFootprint(light, below, plate, 2.0f, 0.0f).empty()) << type << ": the block lies wholly behind the plate";
