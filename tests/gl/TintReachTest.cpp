@@ -229,7 +229,7 @@ TEST(TintReachTranslucent, ReceiversWithOtherLayersOnOneSideAreShadedAsTheWholeL
 // from the ray-traced truth, on the nearest surfaces and on those seen through glass. CSSM's whole
 // lookup's count of the receiver's own tile spreads another layer's shadow up to 7 texels onto a
 // rim, which the builds for one side leave out. Measured (llvmpipe, 320 x 200), RMSE / wrong, split
-// against whole: nearest surfaces cssm2 0.0249557 / 0.3874 % against 0.0249562 / 0.3874 % (8,553
+// against whole: nearest surfaces cssm2 0.0249557 / 0.3874 % against 0.0249562 / 0.3874 % (8,066
 // pixel-lights differing), hard 0.0285447 / 0.1882 % against 0.0285451 / 0.1882 %; behind glass
 // hard 0.0330 / 0.59 % against 0.1253 / 9.81 %, cssm2 0.0298 / 0.545 % against 0.0385 / 2.69 % (hard's
 // split 5.5 % and cssm2's 5.9 % before the own-layers bound, plainMapTint and CSSM's
