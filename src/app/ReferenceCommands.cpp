@@ -49,6 +49,16 @@ reference::Surfaces surfacesOf(const ReportJob& job) {
     return job.translucentReceivers ? reference::Surfaces::Nearest : reference::Surfaces::NearestOpaque;
 }
 
+// compare.json's "surfaces".
+const char* surfacesName(reference::Surfaces surfaces) {
+    switch (surfaces) {
+    case reference::Surfaces::Nearest: return "nearest";
+    case reference::Surfaces::BehindGlass: return "behind glass";
+    case reference::Surfaces::NearestOpaque: break;
+    }
+    return "nearest opaque";
+}
+
 // --behind-glass on a view without glass scores nothing: said, so that zeros are not read as exact.
 void warnIfNothingBehindGlass(const ReportJob& job, const Comparison& cmp, const char* command) {
     const std::vector<bool>& covered = cmp.surfaces().covered;
@@ -148,7 +158,7 @@ int runCompare(const ReportJob& job) {
                {"height", job.height}, {"time", job.time}, {"samples", job.samples},
                {"shadow_resolution", job.render.shadowResolution}, {"reference_seconds", cmp.referenceSeconds()},
                {"wrong_threshold", VisibilityError::kWrongThreshold},
-               {"surfaces", job.behindGlass ? "behind glass" : job.translucentReceivers ? "nearest" : "nearest opaque"},
+               {"surfaces", surfacesName(surfacesOf(job))},
                {"techniques", rows}});
     std::printf("\nreference %.2f s; errors are of light visibility on pixels each light reaches; wrong = off by > %.1f\n",
                 cmp.referenceSeconds(), VisibilityError::kWrongThreshold);

@@ -306,6 +306,15 @@ float sideMargin(const gpu::LightData& light, SideTolerance kind) {
     return 2.0f * (texels * light.shadow.w + tolerance);
 }
 
+// The view depth of a perspective light (spot, projector, a point light's cube face) whose window
+// depth f/(f-n) - fn/((f-n) z) is `windowReach` short of view depth z's; 0 where that is before the
+// near plane.
+float perspectiveDepthNearer(const gpu::LightData& light, float z, float windowReach) {
+    const float n = light.positionNear.w, f = light.directionFar.w;
+    const float window = f / (f - n) - f * n / ((f - n) * z) - windowReach;
+    return window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
+}
+
 // tintFootprintSides, the near side's limit first moved nearer the light by `depthReach` of window
 // depth (how much deeper than its receiver a lookup may compare).
 TintSides footprintSides(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
@@ -327,12 +336,8 @@ TintSides footprintSides(const gpu::LightData& light, const OrientedBox& caster,
         if (notInFront) {
             // Short of the caster is the box of half-size `limit` around the light; beyond it lies
             // the union of six half-spaces, one per axis and side: the footprint's part in each.
-            const float n = light.positionNear.w, f = light.directionFar.w;
-            float least = range.least;
-            if (depthReach > 0.0f) {  // the cube face's view depth whose window depth is depthReach short
-                const float window = f / (f - n) - f * n / ((f - n) * least) - depthReach;
-                least = window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
-            }
+            // (A cube face's depth is a perspective view depth along its axis.)
+            const float least = depthReach > 0.0f ? perspectiveDepthNearer(light, range.least, depthReach) : range.least;
             const float limit = least / (1.0f + margin);
             for (int axis = 0; axis < 3; ++axis)
                 for (const float side : {-1.0f, 1.0f}) {
@@ -369,11 +374,7 @@ TintSides footprintSides(const gpu::LightData& light, const OrientedBox& caster,
         const float n = light.positionNear.w, f = light.directionFar.w;
         float least = range.least;
         if (depthReach > 0.0f && directional) least -= depthReach * (f - n);
-        if (depthReach > 0.0f && !directional) {
-            // The view depth whose window depth f/(f-n) - fn/((f-n) z) is depthReach short of least's.
-            const float window = f / (f - n) - f * n / ((f - n) * least) - depthReach;
-            least = window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
-        }
+        if (depthReach > 0.0f && !directional) least = perspectiveDepthNearer(light, least, depthReach);
         const float limit = directional ? least - margin : least / (1.0f + margin);
         const Plane cut{d, -origin - limit};
         sides.notInFront = footprintIn(volume, receiver, &cut);
