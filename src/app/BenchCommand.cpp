@@ -137,6 +137,13 @@ void printTable(const std::vector<bench::CaseResult>& results) {
                     r.sceneName.c_str(), r.frameMs.mean, r.frameMs.p95, r.fpsMean, r.gpuFrameMs.median, r.passMs[0].median,
                     r.passMs[1].median, r.passMs[2].median, static_cast<double>(r.shadowMemoryBytes) / 1048576.0,
                     r.shadowTrianglesPerFrame);
+        if (r.measurementsRepeated > 0)
+            std::printf("    measured %d times: %s\n", r.measurementsRepeated + 1,
+                        r.programsLinkedMeasuring == 0
+                            ? "the earlier tries compiled shaders the camera's path needed first, the last one none"
+                            : ("every try compiled shaders; the last one " + std::to_string(r.programsLinkedMeasuring) +
+                               " program(s), whose compile its times include")
+                                  .c_str());
         if (r.glErrors > 0 || r.glWarnings > 0)
             std::printf("    GL errors %d, driver warnings %d while it ran: its times include the driver's checks and their logging\n", r.glErrors,
                         r.glWarnings);
@@ -179,7 +186,8 @@ void printFloorRatios(const std::vector<bench::CaseResult>& results) {
 void printRoundRatios(const std::vector<bench::CaseResult>& results) {
     const auto rows = bench::roundRatios(results);
     if (rows.empty()) return;
-    std::printf("in rounds (median frame ms of each case ÷ its scene's first case's, in the same round; median over the rounds):\n");
+    std::printf("in rounds (frame ms of each case, the median over its consecutive frame pairs, ÷ its scene's first case's in the "
+                "same round; median over the rounds):\n");
     for (const auto& q : rows) {
         std::printf("  %-30.30s @%-14.14s %8.2f ms  %6.3fx %s  [", q.label.c_str(), q.sceneName.c_str(), q.medianFrameMs, q.medianRatio,
                     q.base.c_str());

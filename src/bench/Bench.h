@@ -68,6 +68,11 @@ struct CaseResult {
     int warmupFrames = 0;
     double warmupSeconds = 0;
     bool settled = false;  // warm-up ended because frame times settled, not at its cap
+    // Programs linked during the measured frames (gl::Program::linkedSoFar): each repeat of the
+    // measurement follows one that linked some, and this counts those of the one kept (0 unless
+    // every try linked one).
+    std::uint64_t programsLinkedMeasuring = 0;
+    int measurementsRepeated = 0;
     bool calibrated = false;
     double finishOverheadMs = 0;  // an empty glFinish round trip, subtracted from the wall times
     std::array<PassCalibration, render::kPassCount> calibration;

@@ -82,8 +82,9 @@ std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results) {
             const CaseResult& c = results[static_cast<std::size_t>(k) * perRound + i];
             const CaseResult& base = results[static_cast<std::size_t>(k) * perRound + baseIndex];
             if (!sameCase(c, r) || !sameCase(base, results[baseIndex])) return {};  // not a repeated list
-            row.frameMs.push_back(c.frameMs.median);
-            row.ratios.push_back(base.frameMs.median > 0 ? c.frameMs.median / base.frameMs.median : 0.0);
+            const double frame = pairedMedian(c.frameSamples), baseFrame = pairedMedian(base.frameSamples);
+            row.frameMs.push_back(frame);
+            row.ratios.push_back(baseFrame > 0 ? frame / baseFrame : 0.0);
         }
         row.medianFrameMs = summarize(row.frameMs).median;
         row.medianRatio = summarize(row.ratios).median;
@@ -173,10 +174,12 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
             {"pass_gpu_ms", passes},
             {"gpu_frame_ms", summaryJson(r.gpuFrameMs)},
             {"frame_ms", summaryJson(r.frameMs)},
+            {"frame_ms_pair_median", pairedMedian(r.frameSamples)},
             {"fps", {{"mean", r.fpsMean}, {"min", r.fpsMin}, {"max", r.fpsMax}, {"p95", r.fpsP95}}},
             {"shadow_memory_bytes", r.shadowMemoryBytes},
             {"shadow_triangles_per_frame", r.shadowTrianglesPerFrame},
             {"warmup", {{"frames", r.warmupFrames}, {"seconds", r.warmupSeconds}, {"settled", r.settled}}},
+            {"measurement", {{"repeated", r.measurementsRepeated}, {"programs_linked", r.programsLinkedMeasuring}}},
             {"calibration", r.calibrated ? calibration : json(nullptr)},
             {"gl_errors", r.glErrors},
             {"gl_warnings", r.glWarnings},
@@ -214,6 +217,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
                               std::to_string(render::FrameTimer::kRingDepth) + " frames"},
           {"gpu_frame_ms", "sum of the pass queries of one frame"},
           {"frame_ms", "std::chrono::steady_clock between consecutive frame starts; at most 2 frames in flight (fences)"},
+          {"frame_ms_pair_median", "median of the means of consecutive frame_ms pairs (bench::pairedMedian); the rounds' ratios use it"},
           {"calibration", "glFinish before and after each pass, steady_clock around it, beside the same pass's query"}}},
         {"settings",
          {{"width", settings.width}, {"height", settings.height}, {"frames", settings.frames}, {"seconds", settings.seconds},

@@ -84,7 +84,7 @@ std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results);
 // frame times do not. Empty with one round.
 struct RoundRatio {
     std::string label, sceneName, base;
-    std::vector<double> frameMs, ratios;  // per round: median frame (wall clock), ÷ the base's
+    std::vector<double> frameMs, ratios;  // per round: the frames' pairedMedian (wall clock), ÷ the base's
     double medianFrameMs = 0, medianRatio = 0;
 };
 std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results);

@@ -26,6 +26,22 @@ Summary summarize(std::vector<double> samples) {
     return s;
 }
 
+double pairedMedian(const std::vector<double>& samples) {
+    if (samples.size() < 2) return samples.empty() ? 0.0 : samples.front();
+    std::vector<double> pairs(samples.size() - 1);
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i) pairs[i] = 0.5 * (samples[i] + samples[i + 1]);
+    return summarize(std::move(pairs)).median;
+}
+
+bool framesSettled(const std::vector<double>& frameMs) {
+    if (frameMs.size() < 12) return false;
+    const auto mid = [&](std::size_t from) {
+        return pairedMedian(std::vector<double>(frameMs.end() - static_cast<long>(from), frameMs.end() - static_cast<long>(from) + 6));
+    };
+    const double last = mid(6), before = mid(12);
+    return std::abs(last - before) <= 0.05 * before;
+}
+
 LineFit fitLine(const std::vector<double>& x, const std::vector<double>& y) {
     if (x.size() != y.size()) throw std::invalid_argument("fitLine: x and y differ in length");
     LineFit fit;

@@ -14,6 +14,19 @@ struct Summary {
 // Empty input gives an all-zero summary. Percentiles by nearest rank.
 Summary summarize(std::vector<double> samples);
 
+// The median of the means of consecutive pairs, (s[i] + s[i+1]) / 2, of samples in the order they
+// were taken (one sample: itself; none: 0). The bench keeps two frames in flight (FramePacer), so
+// one frame's wall time can move into its neighbour's: on llvmpipe hard on scenes/glass.json ran
+// 8-23 and 83-113 ms frames in turn, whose plain median landed on either side of their 50-60 ms
+// of GPU time from one round to the next. A pair holds both halves; one slow frame still moves
+// only two pairs out of the middle.
+double pairedMedian(const std::vector<double>& samples);
+
+// The bench's warm-up ends once the last 6 frame times' pairedMedian is within 5 % of the 6
+// before's (pairs, as frames that alternate short and long never settled by the plain median of 5:
+// hard on scenes/glass.json ran to the warm-up's cap in 7 of 10 cases at stop 63).
+bool framesSettled(const std::vector<double>& frameMs);
+
 // y ≈ intercept + slope·x by ordinary least squares, with the coefficient of determination
 // R² = 1 − Σ(y − ŷ)² / Σ(y − ȳ)²: the share of y's variance the line explains.
 struct LineFit {

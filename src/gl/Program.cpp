@@ -6,6 +6,10 @@ namespace penumbra::gl {
 
 namespace fs = std::filesystem;
 
+static std::uint64_t linked = 0;  // GL is driven from one thread: no atomic needed
+
+std::uint64_t Program::linkedSoFar() { return linked; }
+
 static GLuint compileStage(GLenum stage, const fs::path& file, const ProgramDesc& desc) {
     const ShaderSource src = ShaderSource::load(file, desc);
     const GLuint shader = glCreateShader(stage);
@@ -39,6 +43,7 @@ Program Program::build(const ProgramDesc& desc) {
     program.object_ = Object<detail::deleteProgram>(glCreateProgram());
     for (const auto& s : stages) glAttachShader(program.id(), s.id());
     glLinkProgram(program.id());
+    ++linked;
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     if (!ok) {

@@ -2,6 +2,7 @@
 #include "gl/Object.h"
 #include "gl/ShaderSource.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <map>
@@ -15,6 +16,10 @@ class Program {
 public:
     Program() = default;
     static Program build(const ProgramDesc& desc);
+    // Programs this process has linked so far (every build, failed ones too). A frame that links
+    // one pays for the compile, which on llvmpipe runs to hundreds of milliseconds with a cold
+    // shader cache: the bench repeats a measurement that did (bench/Bench.cpp).
+    static std::uint64_t linkedSoFar();
 
     GLuint id() const { return object_.id(); }
     void use() const { glUseProgram(id()); }

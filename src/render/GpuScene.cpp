@@ -116,13 +116,19 @@ void GpuScene::drawTrianglesSorted(const Draw& d, const gl::Program& program, co
     sortedIndices_.update(0, bytes, indices.data());
     const GpuMesh& g = meshes_[d.mesh];
     glVertexArrayElementBuffer(g.vao.id(), sortedIndices_.id());
-    draw(d, program, 0, static_cast<GLsizei>(indices.size()));
+    prepare(d, program);
+    drawRange(0, static_cast<GLsizei>(indices.size()));
     glVertexArrayElementBuffer(g.vao.id(), g.indices.id());
 }
 
 void GpuScene::draw(const Draw& d, const gl::Program& program) const {
+    prepare(d, program);
+    drawPrepared(d);
+}
+
+void GpuScene::drawPrepared(const Draw& d) const {
     const scene::MeshPart& part = scene_.meshes[d.mesh].parts[d.part];
-    draw(d, program, part.firstIndex, static_cast<GLsizei>(part.indexCount));
+    drawRange(part.firstIndex, static_cast<GLsizei>(part.indexCount));
 }
 
 std::size_t GpuScene::drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const {
@@ -132,14 +138,16 @@ std::size_t GpuScene::drawInside(const Draw& d, const gl::Program& program, cons
         return d.triangles;
     }
     std::size_t triangles = 0;
-    for (const IndexRange& r : visibleRanges(clusters, viewProj * d.model)) {
-        draw(d, program, r.firstIndex, static_cast<GLsizei>(r.indexCount));
+    const std::vector<IndexRange> ranges = visibleRanges(clusters, viewProj * d.model);
+    if (!ranges.empty()) prepare(d, program);
+    for (const IndexRange& r : ranges) {
+        drawRange(r.firstIndex, static_cast<GLsizei>(r.indexCount));
         triangles += r.indexCount / 3;
     }
     return triangles;
 }
 
-void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const {
+void GpuScene::prepare(const Draw& d, const gl::Program& program) const {
     const scene::Material& m = *d.material;
     program.set("uModel", d.model);
     program.set("uDiffuse", m.diffuse);
@@ -153,6 +161,9 @@ void GpuScene::draw(const Draw& d, const gl::Program& program, std::uint32_t fir
     if (m.diffuseTexture >= 0) images_[static_cast<std::size_t>(m.diffuseTexture)].bind(gpu::kUnitDiffuse);
     program.use();
     meshes_[d.mesh].vao.bind();
+}
+
+void GpuScene::drawRange(std::uint32_t firstIndex, GLsizei count) {
     glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(static_cast<std::uintptr_t>(firstIndex) * sizeof(std::uint32_t)));
 }

@@ -61,6 +61,11 @@ public:
     // The same, skipping the part's clusters (MeshClusters.h) outside the clip volume of
     // `viewProj`; returns the triangles drawn.
     std::size_t drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const;
+    // draw() in two steps, for a part drawn several times with one program (Renderer::drawPieces,
+    // scissored): prepare() sets and binds what draw() does, once; drawPrepared() issues the part's
+    // draw with whatever was prepared last.
+    void prepare(const Draw& d, const gl::Program& program) const;
+    void drawPrepared(const Draw& d) const;
     // The same, with the part's triangles sorted back to front from `eye` (painter's by triangle).
     void drawTrianglesSorted(const Draw& d, const gl::Program& program, const glm::vec3& eye) const;
     const gl::Texture& image(int index) const { return images_[static_cast<std::size_t>(index)]; }
@@ -68,7 +73,7 @@ public:
     void addSurfaceBounds(const Draw& d, std::vector<scene::Bounds>& out) const;
 
 private:
-    void draw(const Draw& d, const gl::Program& program, std::uint32_t firstIndex, GLsizei count) const;
+    static void drawRange(std::uint32_t firstIndex, GLsizei count);
     struct GpuMesh {
         gl::Buffer vertices, indices;
         gl::VertexArray vao;

@@ -986,13 +986,24 @@ std::vector<Renderer::Piece> Renderer::piecesOf(const TintSplit* split, std::siz
 }
 
 // Each pixel in one piece, drawn with the lookup it needs and without the lights that miss it.
+// The pieces are disjoint rectangles, so their order is free: each build is prepared once (its
+// uniforms, texture and program) and draws all of its pieces.
 void Renderer::drawPieces(const Draw& d, const std::vector<Piece>& pieces, const TintSplit& split) {
     glEnable(GL_SCISSOR_TEST);
-    for (const Piece& p : pieces) {
-        glScissor(p.rect.x0, p.rect.y0, p.rect.x1 - p.rect.x0, p.rect.y1 - p.rect.y0);
-        gpu_.draw(d, lighting_.of(*d.material, d.translucent, p.lookup, p.unlit, p.unshadowed));
-        if (p.unlit != 0) ++tintShading_.unlitPieces;
-        if (p.unshadowed != 0) ++tintShading_.unshadowedPieces;
+    std::vector<bool> drawn(pieces.size(), false);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        if (drawn[i]) continue;
+        const gl::Program& program = lighting_.of(*d.material, d.translucent, pieces[i].lookup, pieces[i].unlit, pieces[i].unshadowed);
+        gpu_.prepare(d, program);
+        for (std::size_t j = i; j < pieces.size(); ++j) {
+            const Piece& p = pieces[j];
+            if (drawn[j] || p.lookup != pieces[i].lookup || p.unlit != pieces[i].unlit || p.unshadowed != pieces[i].unshadowed) continue;
+            drawn[j] = true;
+            glScissor(p.rect.x0, p.rect.y0, p.rect.x1 - p.rect.x0, p.rect.y1 - p.rect.y0);
+            gpu_.drawPrepared(d);
+            if (p.unlit != 0) ++tintShading_.unlitPieces;
+            if (p.unshadowed != 0) ++tintShading_.unshadowedPieces;
+        }
     }
     if (split.scissored) glScissor(split.area.x0, split.area.y0, split.area.x1 - split.area.x0, split.area.y1 - split.area.y0);
     else glDisable(GL_SCISSOR_TEST);

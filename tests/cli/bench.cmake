@@ -266,3 +266,23 @@ if(NOT triangles_0.5 EQUAL triangles_0.0001 OR NOT triangles_0.5 GREATER 100)
   message(FATAL_ERROR "--scene-step 0.5: ${triangles_0.5} triangles per frame into the map, nearly still: ${triangles_0.0001}; "
                       "expected the same, with the sphere's (> 100)")
 endif()
+
+# A measured frame that links a program pays for its compile (hundreds of ms on llvmpipe with a
+# cold shader cache), so the bench measures again over the same frames. The default scene orbited
+# at 1 s a frame reaches views whose lighting builds (the lights each pixel needs, render/
+# LightingProgram.h) its two warm-up frames at t = 0 and 1 s did not need: the first try links
+# some, the kept one none, and the table says so. The same case without repeats would have kept
+# those compiles in its frame times.
+run_penumbra("${OUT}/repeat" repeat "${PENUMBRA}" bench --techniques hard --size 160x90 --frames 20 --warmup-seconds 0
+             --scene-step 1 --no-images --out "${OUT}/repeat")
+file(READ "${OUT}/repeat/bench.json" doc)
+string(JSON repeated GET "${doc}" cases 0 measurement repeated)
+string(JSON linked GET "${doc}" cases 0 measurement programs_linked)
+string(JSON measuredFrames GET "${doc}" cases 0 frame_ms count)
+if(repeated LESS 1 OR NOT linked EQUAL 0 OR NOT measuredFrames EQUAL 20)
+  message(FATAL_ERROR "orbit at 1 s a frame: measured again ${repeated} time(s), the kept try linked ${linked} program(s) over "
+                      "${measuredFrames} frames; expected at least 1 repeat, 0 programs, 20 frames")
+endif()
+if(NOT repeat MATCHES "measured [23] times: the earlier tries compiled shaders")
+  message(FATAL_ERROR "stdout does not say the case was measured again:\n${repeat}")
+endif()
