@@ -18,13 +18,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A torus around +Y: `major` radius to the tube's centre, `minor` tube radius.
+// A torus around +Y: `major` radius to the tube's centre, `minor` tube radius. The seams' second
+// copies (i = around, j = tube: other texture coordinates) take the angle of the first (% around,
+// % tube) so their positions are equal to the bit: sin(2π) in floats is 1.7e-7, which left the
+// seams open to Mesh::closedParts (welded by exact position) and the tori drawn with both faces
+// (stop 63: the 98k grid shaded 1.97 million fragments a frame instead of 1.51).
 scene::Mesh torus(float major, float minor, int around, int tube) {
     scene::Mesh m;
     for (int i = 0; i <= around; ++i)
         for (int j = 0; j <= tube; ++j) {
-            const float u = glm::two_pi<float>() * static_cast<float>(i) / static_cast<float>(around);
-            const float v = glm::two_pi<float>() * static_cast<float>(j) / static_cast<float>(tube);
+            const float u = glm::two_pi<float>() * static_cast<float>(i % around) / static_cast<float>(around);
+            const float v = glm::two_pi<float>() * static_cast<float>(j % tube) / static_cast<float>(tube);
             const glm::vec3 centre(major * std::cos(u), 0.0f, major * std::sin(u));
             const glm::vec3 normal(std::cos(v) * std::cos(u), std::sin(v), std::cos(v) * std::sin(u));
             m.vertices.push_back({centre + minor * normal, normal, {static_cast<float>(i) / around, static_cast<float>(j) / tube}});
