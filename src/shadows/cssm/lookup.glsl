@@ -493,13 +493,8 @@ vec3 stochasticVisibility(int light, vec3 P, vec3 N, float NdotL) {
     return coloured;
 }
 
+// Bounded as plainMapTint bounds the plain tint: the counts and the tint product of the whole
+// lookup may miss a thin pane's near side in front of its far side.
 vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
-    vec3 visibility = stochasticVisibility(light, P, N, NdotL);
-#if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
-    // At most the receiver's own layers in front, as plainMapTint bounds the plain tint: the counts
-    // and the tint product of the whole lookup may miss a thin pane's near side in front of its far
-    // side (compare --behind-glass, stop 62).
-    visibility = min(visibility, ownLayersInFront(NdotL));
-#endif
-    return visibility;
+    return atMostOwnLayersInFront(stochasticVisibility(light, P, N, NdotL), NdotL);
 }

@@ -279,6 +279,20 @@ vec3 tintAt(ShadowSite s) {
 #endif
 }
 
+// Light reaching a translucent receiver, bounded by its own layers in front, per channel. Light
+// reaching a closed part's side turned from the light has crossed one of its own entry faces at
+// least, and every layer only takes light away: the truth is at most ownLayersInFront, so the bound
+// can only bring an answer nearer it. It mends the whole lookup on a thin pane's far side, whose
+// lookup the bias lands in front of the pane's near side, so that it read no layer (1) where the
+// truth is t (compare --behind-glass, stop 62): plainMapTint's and CSSM's (cssm/lookup.glsl).
+vec3 atMostOwnLayersInFront(vec3 light, float NdotL) {
+#if defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
+    return min(light, ownLayersInFront(NdotL));
+#else
+    return light;
+#endif
+}
+
 // The tint at a site of the light's plain map (hard's lookup, and those whose depth compare reads
 // maps of their own: cascades, warped views): white off the map; a translucent receiver that no
 // other layer's tint reaches (RECEIVER_UNTINTED: the renderer's tint split) gets only its own
@@ -287,15 +301,8 @@ vec3 plainMapTint(ShadowSite s, float NdotL) {
     if (!s.inside) return vec3(1.0);
 #if defined(MATERIAL_TRANSLUCENT) && defined(RECEIVER_UNTINTED) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
     return ownLayersInFront(NdotL);
-#elif defined(MATERIAL_TRANSLUCENT) && !(defined(SCENE_TRANSLUCENT_CASTERS) && SCENE_TRANSLUCENT_CASTERS == 0)
-    // Light reaching a closed part's side turned from the light has crossed one of its own entry
-    // faces at least, and every layer only takes light away: the truth is at most its own layers in
-    // front, per channel, so the bound can only bring the tint nearer it. It mends the whole
-    // lookup on a thin pane's far side, whose lookup the bias lands in front of the pane's near
-    // side, so that it read no layer (1) where the truth is t (compare --behind-glass, stop 62).
-    return min(tintAt(s), ownLayersInFront(NdotL));
 #else
-    return tintAt(s);
+    return atMostOwnLayersInFront(tintAt(s), NdotL);
 #endif
 }
 
