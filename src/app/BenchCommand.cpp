@@ -130,6 +130,9 @@ std::optional<bench::Quality> measureQuality(const BenchJob& job, const std::vec
 }
 
 void printTable(const std::vector<bench::CaseResult>& results) {
+    if (!results.empty() && results.front().interleaveFrames > 0)
+        std::printf("each scene's cases measured together, in turns of %d frames each (the first two and the last of a turn not counted)\n",
+                    results.front().interleaveFrames);
     std::printf("%-30s %-14s %9s %9s %8s %8s %8s %8s %9s %10s %12s\n", "case", "scene", "frame ms", "p95", "FPS", "GPU ms",
                 "shadow", "opaque", "transl.", "memory MiB", "shadow tris");
     for (const auto& r : results) {

@@ -188,6 +188,11 @@ int main(int argc, char** argv) {
                          "every case measures the same N frames, e.g. --frames 64 --scene-step 0.125: the default scene's "
                          "whole 8 s animation")
         ->check(CLI::Range(0.0f, 60.0f));
+    benchCmd->add_option("--interleave", bench.settings.interleaveFrames,
+                         "measure the cases of each scene together, in turns of N frames each (N >= 5; the first two "
+                         "and the last frame of a turn are not counted), so that a machine whose speed swings slows "
+                         "them alike; every case of the scene is held in memory at once (default 0: one after another)")
+        ->check(CLI::Range(5, 1000));
     benchCmd->add_flag("--fixed-camera", bench.settings.fixedCamera, "keep the scene's camera (no camera_path, no orbit): for peer comparisons");
     benchCmd->add_flag("--calibrate", bench.settings.calibrate, "check every pass's timer query against a glFinish wall clock");
     benchCmd->add_flag("--quality", bench.quality, "add compare's metrics and heat maps (ray-traced reference of the first scene)");

@@ -134,129 +134,197 @@ std::unique_ptr<Engine> makeEngine(scene::Scene& scene, const BenchCase& c, cons
     return std::make_unique<RendererEngine>(scene, options, settings.width, settings.height);
 }
 
-CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings,
-                   const std::function<void(double)>& progress) {
-    gl::resetDebugErrorCount();
-    const int warningsBefore = gl::debugWarningCount();
-    std::unique_ptr<Engine> engine = makeEngine(scene, c, settings);
-    const int w = settings.width, h = settings.height;
-    FramePacer pacer;
-    std::uint64_t frameNumber = 0;  // the renderer's frame index (timer queries), warm-up included
-    // Scene time runs from 0 again when the measurement starts, so that every case measures the
-    // same frames of the animation whatever its warm-up took (until stop 55 each case went on
-    // from its warm-up's last frame: a faster case measured a later part of the scene).
-    std::uint64_t sceneFrame = 0;
-    Clock::time_point lastStart{};
-    // Renders the next frame; returns the wall time since the previous frame's start (0 for the first).
-    const auto step = [&] {
+// One case's engine, with its own frame counters: the renderer's frame index (timer queries),
+// warm-up included, and the scene frame, from 0 again when the measurement starts, so that every
+// case measures the same frames of the animation whatever its warm-up took (until stop 55 each case
+// went on from its warm-up's last frame: a faster case measured a later part of the scene).
+struct CaseRun {
+    CaseRun(scene::Scene& s, const BenchCase& c, const BenchSettings& st, FramePacer& p)
+        : scene(s), settings(st), pacer(p), engine(makeEngine(s, c, st)) {
+        r.spec = c;
+        r.technique = engine->technique();
+        r.width = st.width;
+        r.height = st.height;
+    }
+    // Renders the next frame (waiting first for the frame two before it, any case's); returns when it started.
+    Clock::time_point step() {
         pacer.wait();
         const Clock::time_point start = Clock::now();
-        const double interval = frameNumber > 0 ? std::chrono::duration<double, std::milli>(start - lastStart).count() : 0.0;
-        lastStart = start;
         const float t = static_cast<float>(sceneFrame++) * settings.sceneStep;
-        engine->frame(t, settings.fixedCamera ? scene.camera : benchCamera(scene, t), w, h);
+        engine->frame(t, settings.fixedCamera ? scene.camera : benchCamera(scene, t), settings.width, settings.height);
         pacer.submitted();
         ++frameNumber;
-        return interval;
-    };
-
-    CaseResult r;
-    r.spec = c;
-    r.technique = engine->technique();
-    r.width = w;
-    r.height = h;
-
-    // One measurement: the frames' wall intervals, shadow triangles, and GPU ms per pass.
-    const auto measureFrames = [&](std::vector<double>& frameMs, double& triangles,
-                                   std::array<std::vector<double>, render::kPassCount>& pass, std::vector<double>& gpuTotal) {
-        engine->timer().takeFinished();  // what came before (those still in flight are dropped by frame number below)
-        const std::uint64_t firstMeasured = frameNumber;
+        return start;
+    }
+    // The GPU ms per pass of the frames `kept` accepts, among those finished since the last call.
+    void takeTimes(const std::function<bool(std::uint64_t)>& kept) {
+        engine->timer().waitForAll();
+        for (const render::FrameTimes& t : engine->timer().takeFinished()) {
+            if (!kept(t.frame)) continue;
+            for (int p = 0; p < render::kPassCount; ++p) pass[static_cast<std::size_t>(p)].push_back(t.gpu[static_cast<render::Pass>(p)]);
+            gpuTotal.push_back(t.gpu.totalMs());
+        }
+    }
+    void clearSamples() {
+        engine->timer().takeFinished();  // what came before (those still in flight are dropped by frame number)
         sceneFrame = 0;
         frameMs.clear();
         triangles = 0;
         for (auto& p : pass) p.clear();
         gpuTotal.clear();
-        const Clock::time_point measureStart = Clock::now();
-        for (int i = 0;; ++i) {
-            const double interval = step();
-            if (i > 0) frameMs.push_back(interval);
-            triangles += static_cast<double>(engine->shadowTriangles());
-            const double elapsed = millisecondsSince(measureStart);
-            // N frames give N intervals: N - 1 between starts, and the last one's start to its end.
-            const bool done = settings.frames > 0 ? i + 1 >= settings.frames : (i >= 2 && elapsed >= settings.seconds * 1000.0);
-            progress(0.3 + 0.6 * (settings.frames > 0 ? double(i + 1) / settings.frames : std::min(1.0, elapsed / (settings.seconds * 1000.0))));
-            if (done) break;
-        }
-        // The last frame's interval: until it has finished.
-        glFinish();
-        frameMs.push_back(millisecondsSince(lastStart));
-        engine->timer().waitForAll();
-        for (const render::FrameTimes& t : engine->timer().takeFinished()) {
-            if (t.frame < firstMeasured) continue;
-            for (int p = 0; p < render::kPassCount; ++p) pass[static_cast<std::size_t>(p)].push_back(t.gpu[static_cast<render::Pass>(p)]);
-            gpuTotal.push_back(t.gpu.totalMs());
-        }
-    };
-
-    // Warm-up: shaders compile at first draw, a GPU climbs to its working clock.
-    const Clock::time_point warmStart = Clock::now();
-    std::vector<double> warm;
-    const double warmMs = settings.warmupSeconds * 1000.0;
-    for (;;) {
-        const double interval = step();
-        if (frameNumber > 1) warm.push_back(interval);
-        const double elapsed = millisecondsSince(warmStart);
-        if (frameNumber >= 2 && (warmMs <= 0 || (elapsed >= warmMs && framesSettled(warm)))) {
-            r.settled = true;
-            break;
-        }
-        if (frameNumber >= 2 && elapsed >= 3.0 * warmMs) break;
-        progress(0.3 * std::min(1.0, elapsed / std::max(1.0, 3.0 * warmMs)));
     }
-    r.warmupFrames = static_cast<int>(frameNumber);
-    r.warmupSeconds = millisecondsSince(warmStart) / 1000.0;
 
-    // Measurement, from scene time 0 along the same path as the warm-up. A measured frame that
-    // links a program (a lighting build that the camera's new view needs first: lighting.frag is
-    // specialised to the pixels each light reaches, render/LightingProgram.h) pays for its compile,
-    // 450 ms on llvmpipe with a cold shader cache against 50 ms frames: the measurement is taken
-    // again over the same frames, now compiled, at most kMostMeasurements times in all.
-    constexpr int kMostMeasurements = 3;
+    scene::Scene& scene;
+    const BenchSettings& settings;
+    FramePacer& pacer;
+    std::unique_ptr<Engine> engine;
+    std::uint64_t frameNumber = 0, sceneFrame = 0;
+    CaseResult r;
+    // The measurement's samples: wall ms per frame, shadow triangles, GPU ms per pass and in all.
     std::vector<double> frameMs;
     double triangles = 0;
     std::array<std::vector<double>, render::kPassCount> pass;
     std::vector<double> gpuTotal;
+};
+
+// Warm-up: shaders compile at first draw, a GPU climbs to its working clock.
+void warmUp(CaseRun& run, const std::function<void(double)>& progress) {
+    const Clock::time_point warmStart = Clock::now();
+    std::vector<double> warm;
+    const double warmMs = run.settings.warmupSeconds * 1000.0;
+    Clock::time_point last{};
+    for (;;) {
+        const Clock::time_point start = run.step();
+        if (run.frameNumber > 1) warm.push_back(std::chrono::duration<double, std::milli>(start - last).count());
+        last = start;
+        const double elapsed = millisecondsSince(warmStart);
+        if (run.frameNumber >= 2 && (warmMs <= 0 || (elapsed >= warmMs && framesSettled(warm)))) {
+            run.r.settled = true;
+            break;
+        }
+        if (run.frameNumber >= 2 && elapsed >= 3.0 * warmMs) break;
+        progress(0.3 * std::min(1.0, elapsed / std::max(1.0, 3.0 * warmMs)));
+    }
+    run.r.warmupFrames = static_cast<int>(run.frameNumber);
+    run.r.warmupSeconds = millisecondsSince(warmStart) / 1000.0;
+}
+
+// One measurement of a case alone: the wall interval between frame starts (the last frame's: to
+// its end), shadow triangles, and GPU ms per pass.
+void measureAlone(CaseRun& run, const std::function<void(double)>& progress) {
+    const BenchSettings& settings = run.settings;
+    run.clearSamples();
+    const std::uint64_t firstMeasured = run.frameNumber;
+    const Clock::time_point measureStart = Clock::now();
+    Clock::time_point last{};
+    for (int i = 0;; ++i) {
+        const Clock::time_point start = run.step();
+        if (i > 0) run.frameMs.push_back(std::chrono::duration<double, std::milli>(start - last).count());
+        last = start;
+        run.triangles += static_cast<double>(run.engine->shadowTriangles());
+        const double elapsed = millisecondsSince(measureStart);
+        // N frames give N intervals: N - 1 between starts, and the last one's start to its end.
+        const bool done = settings.frames > 0 ? i + 1 >= settings.frames : (i >= 2 && elapsed >= settings.seconds * 1000.0);
+        progress(0.3 + 0.6 * (settings.frames > 0 ? double(i + 1) / settings.frames : std::min(1.0, elapsed / (settings.seconds * 1000.0))));
+        if (done) break;
+    }
+    glFinish();
+    run.frameMs.push_back(millisecondsSince(last));
+    run.takeTimes([&](std::uint64_t frame) { return frame >= firstMeasured; });
+}
+
+// One measurement of several cases of one scene in turns of settings.interleaveFrames frames each,
+// round robin, so that a machine whose speed swings within seconds slows them alike. A turn's
+// first kTurnSkip frames share the pipeline (two frames in flight) with the case before, and its
+// last frame's interval would end at the next case's start: the frames in between are measured,
+// wall interval and GPU time alike. Each case measures settings.frames intervals, or turns until
+// settings.seconds per case have passed (at least three turns each).
+constexpr int kTurnSkip = 2;
+void measureInterleaved(std::vector<std::unique_ptr<CaseRun>>& runs, const BenchSettings& settings,
+                        const std::function<void(double)>& progress) {
+    const int turn = settings.interleaveFrames;
+    std::vector<std::vector<std::uint64_t>> measured(runs.size());  // frame numbers, per case
+    for (auto& run : runs) run->clearSamples();
+    const Clock::time_point measureStart = Clock::now();
+    const double targetMs = settings.seconds * 1000.0 * static_cast<double>(runs.size());
+    for (int turns = 1;; ++turns) {
+        for (std::size_t k = 0; k < runs.size(); ++k) {
+            CaseRun& run = *runs[k];
+            std::vector<Clock::time_point> starts;
+            std::vector<std::size_t> kept;  // frames of the turn measured
+            for (int f = 0; f < turn; ++f) {
+                starts.push_back(run.step());
+                const bool wanted = settings.frames <= 0 || run.frameMs.size() + kept.size() < static_cast<std::size_t>(settings.frames);
+                if (f < kTurnSkip || f + 1 == turn || !wanted) continue;
+                kept.push_back(static_cast<std::size_t>(f));
+                measured[k].push_back(run.frameNumber - 1);
+                run.triangles += static_cast<double>(run.engine->shadowTriangles());
+            }
+            for (std::size_t f : kept) run.frameMs.push_back(std::chrono::duration<double, std::milli>(starts[f + 1] - starts[f]).count());
+        }
+        const double elapsed = millisecondsSince(measureStart);
+        bool done = true;
+        for (const auto& run : runs)
+            done = done && (settings.frames > 0 ? run->frameMs.size() >= static_cast<std::size_t>(settings.frames) : turns >= 3);
+        if (settings.frames <= 0) done = done && elapsed >= targetMs;
+        progress(0.3 + 0.6 * (settings.frames > 0 ? 1.0 : std::min(1.0, elapsed / targetMs)));
+        if (done) break;
+    }
+    glFinish();
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const std::vector<std::uint64_t>& frames = measured[k];
+        runs[k]->takeTimes([&](std::uint64_t frame) { return std::binary_search(frames.begin(), frames.end(), frame); });
+    }
+}
+
+// A measured frame that links a program (a lighting build that the camera's new view needs
+// first: lighting.frag is specialised to the pixels each light reaches, render/LightingProgram.h)
+// pays for its compile, 450 ms on llvmpipe with a cold shader cache against 50 ms frames: the
+// measurement is taken again over the same frames, now compiled, at most kMostMeasurements times
+// in all.
+constexpr int kMostMeasurements = 3;
+template <class Measure>
+void measureUntilCompiled(const std::vector<CaseRun*>& runs, Measure&& measure) {
     for (int attempt = 1;; ++attempt) {
         const std::uint64_t linkedBefore = gl::Program::linkedSoFar();
-        measureFrames(frameMs, triangles, pass, gpuTotal);
-        r.programsLinkedMeasuring = gl::Program::linkedSoFar() - linkedBefore;
-        if (r.programsLinkedMeasuring == 0 || attempt == kMostMeasurements) break;
-        ++r.measurementsRepeated;
+        measure();
+        const std::uint64_t linked = gl::Program::linkedSoFar() - linkedBefore;
+        for (CaseRun* run : runs) run->r.programsLinkedMeasuring = linked;
+        if (linked == 0 || attempt == kMostMeasurements) break;
+        for (CaseRun* run : runs) ++run->r.measurementsRepeated;
     }
-    for (int p = 0; p < render::kPassCount; ++p) r.passMs[static_cast<std::size_t>(p)] = summarize(pass[static_cast<std::size_t>(p)]);
-    r.passSamples = pass;
-    r.frameSamples = frameMs;
-    r.gpuFrameMs = summarize(gpuTotal);
-    r.frameMs = summarize(frameMs);
-    const double measured = static_cast<double>(frameMs.size());
-    r.shadowTrianglesPerFrame = triangles / measured;
+}
+
+// The measurement's summaries, then (settings.calibrate) each pass's query against a glFinish wall
+// clock, and the case's picture.
+void finish(CaseRun& run) {
+    CaseResult& r = run.r;
+    const BenchSettings& settings = run.settings;
+    for (int p = 0; p < render::kPassCount; ++p) r.passMs[static_cast<std::size_t>(p)] = summarize(run.pass[static_cast<std::size_t>(p)]);
+    r.passSamples = run.pass;
+    r.frameSamples = run.frameMs;
+    r.gpuFrameMs = summarize(run.gpuTotal);
+    r.frameMs = summarize(run.frameMs);
+    r.shadowTrianglesPerFrame = run.triangles / static_cast<double>(run.frameMs.size());
     r.fpsMean = 1000.0 / r.frameMs.mean;
     r.fpsMin = 1000.0 / r.frameMs.max;
     r.fpsMax = 1000.0 / r.frameMs.min;
     r.fpsP95 = 1000.0 / r.frameMs.p95;
-    r.shadowMemoryBytes = engine->memoryBytes();
-    r.parameters = engine->parameters();
+    r.shadowMemoryBytes = run.engine->memoryBytes();
+    r.parameters = run.engine->parameters();
+    r.interleaveFrames = settings.interleaveFrames;
 
+    Engine& engine = *run.engine;
     if (settings.calibrate) {
         // glFinish around every pass: what each pass really takes, against its query.
-        engine->timer().setCalibration(true);
+        engine.timer().setCalibration(true);
         const int n = std::max(3, std::min(settings.frames > 0 ? settings.frames : 8, 8));
-        const std::uint64_t first = frameNumber;
-        for (int i = 0; i < n; ++i) step();
+        const std::uint64_t first = run.frameNumber;
+        for (int i = 0; i < n; ++i) run.step();
         glFinish();
-        engine->timer().waitForAll();
+        engine.timer().waitForAll();
         std::array<std::vector<double>, render::kPassCount> query, wall;
-        for (const render::FrameTimes& t : engine->timer().takeFinished()) {
+        for (const render::FrameTimes& t : engine.timer().takeFinished()) {
             if (t.frame < first) continue;
             for (int p = 0; p < render::kPassCount; ++p) {
                 query[static_cast<std::size_t>(p)].push_back(t.gpu[static_cast<render::Pass>(p)]);
@@ -270,19 +338,56 @@ CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings&
             const double diff = std::abs(cal.queryMs - cal.wallMs);
             cal.flagged = diff > 0.1 * std::max(cal.queryMs, cal.wallMs) && diff > 0.1;
         }
-        r.finishOverheadMs = engine->timer().finishOverheadMs();
-        engine->timer().setCalibration(false);
+        r.finishOverheadMs = engine.timer().finishOverheadMs();
+        engine.timer().setCalibration(false);
         r.calibrated = true;
     }
 
-    if (settings.images && c.round == 0) {  // later rounds (--rounds) draw the same pictures
-        engine->frame(0.0f, settings.fixedCamera ? scene.camera : benchCamera(scene, 0.0f), w, h);
-        r.image = render::readFramebufferRgba8(engine->framebuffer(), w, h);
+    if (settings.images && r.spec.round == 0) {  // later rounds (--rounds) draw the same pictures
+        engine.frame(0.0f, settings.fixedCamera ? run.scene.camera : benchCamera(run.scene, 0.0f), r.width, r.height);
+        r.image = render::readFramebufferRgba8(engine.framebuffer(), r.width, r.height);
     }
-    r.glErrors = gl::debugErrorCount();
-    r.glWarnings = gl::debugWarningCount() - warningsBefore;
+}
+
+CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings,
+                   const std::function<void(double)>& progress) {
+    gl::resetDebugErrorCount();
+    const int warningsBefore = gl::debugWarningCount();
+    FramePacer pacer;
+    CaseRun run(scene, c, settings, pacer);
+    warmUp(run, progress);
+    measureUntilCompiled({&run}, [&] { measureAlone(run, progress); });
+    finish(run);
+    run.r.glErrors = gl::debugErrorCount();
+    run.r.glWarnings = gl::debugWarningCount() - warningsBefore;
     progress(1.0);
-    return r;
+    return std::move(run.r);
+}
+
+// Cases of one scene measured together (measureInterleaved): each warmed up alone, then turns.
+// GL errors and warnings are the group's, given to each of its cases.
+std::vector<CaseResult> runInterleaved(scene::Scene& scene, const std::vector<BenchCase>& cases, const BenchSettings& settings,
+                                       const std::function<void(std::size_t, double)>& progress) {
+    gl::resetDebugErrorCount();
+    const int warningsBefore = gl::debugWarningCount();
+    FramePacer pacer;
+    std::vector<std::unique_ptr<CaseRun>> runs;
+    std::vector<CaseRun*> all;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        runs.push_back(std::make_unique<CaseRun>(scene, cases[i], settings, pacer));
+        all.push_back(runs.back().get());
+        warmUp(*runs.back(), [&](double f) { progress(i, f); });
+    }
+    measureUntilCompiled(all, [&] { measureInterleaved(runs, settings, [&](double f) { progress(0, f); }); });
+    std::vector<CaseResult> results;
+    for (auto& run : runs) finish(*run);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        runs[i]->r.glErrors = gl::debugErrorCount();
+        runs[i]->r.glWarnings = gl::debugWarningCount() - warningsBefore;
+        progress(i, 1.0);
+        results.push_back(std::move(runs[i]->r));
+    }
+    return results;
 }
 
 }  // namespace
@@ -291,23 +396,35 @@ std::vector<CaseResult> runBench(const std::vector<BenchCase>& cases, const Benc
     std::vector<CaseResult> results;
     std::optional<scene::Scene> scene;
     std::filesystem::path loaded;
-    for (std::size_t i = 0; i < cases.size(); ++i) {
+    for (std::size_t i = 0; i < cases.size();) {
         const BenchCase& c = cases[i];
         if (!scene || loaded != c.scene) {
             scene.reset();
             scene = scene::io::loadScene(c.scene);
             loaded = c.scene;
         }
-        const auto report = [&](double fraction) {
-            if (progress) progress(i, cases.size(), c, fraction);
+        // With interleaving, the consecutive cases of this scene and round measure together.
+        std::size_t end = i + 1;
+        if (settings.interleaveFrames > 0)
+            while (end < cases.size() && cases[end].scene == c.scene && cases[end].round == c.round) ++end;
+        const auto report = [&](std::size_t k, double fraction) {
+            if (progress) progress(i + k, cases.size(), cases[i + k], fraction);
         };
-        report(0.0);
-        CaseResult r = runCase(*scene, c, settings, report);
-        r.sceneName = scene->source.empty() ? c.scene.stem().string() : scene->source.stem().string();
-        r.sceneTriangles = scene->triangleCount();
-        for (const auto& l : scene->lights)
-            if (l.shadow.enabled) r.resolutions.push_back(c.shadowResolution > 0 ? c.shadowResolution : l.shadow.resolution);
-        results.push_back(std::move(r));
+        std::vector<CaseResult> group;
+        if (settings.interleaveFrames > 0)
+            group = runInterleaved(*scene, std::vector<BenchCase>(cases.begin() + static_cast<std::ptrdiff_t>(i),
+                                                                   cases.begin() + static_cast<std::ptrdiff_t>(end)),
+                                   settings, report);
+        else
+            group.push_back(runCase(*scene, c, settings, [&](double f) { report(0, f); }));
+        for (CaseResult& r : group) {
+            r.sceneName = scene->source.empty() ? c.scene.stem().string() : scene->source.stem().string();
+            r.sceneTriangles = scene->triangleCount();
+            for (const auto& l : scene->lights)
+                if (l.shadow.enabled) r.resolutions.push_back(r.spec.shadowResolution > 0 ? r.spec.shadowResolution : l.shadow.resolution);
+            results.push_back(std::move(r));
+        }
+        i = end;
     }
     return results;
 }

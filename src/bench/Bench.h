@@ -45,6 +45,9 @@ struct BenchSettings {
     bool calibrate = false;  // also check every pass's query against a glFinish wall clock
     bool images = true;      // one picture per case (read back after timing)
     bool fixedCamera = false;  // the scene's camera throughout (peer comparisons), no path or orbit
+    // > 0: the cases of one scene and round are measured together, in turns of this many frames
+    // each (the first two and the last of each turn not counted); 0: one case after the other.
+    int interleaveFrames = 0;
     render::RenderOptions render;  // transparency, parameters common to every case
 };
 
@@ -73,6 +76,7 @@ struct CaseResult {
     // every try linked one).
     std::uint64_t programsLinkedMeasuring = 0;
     int measurementsRepeated = 0;
+    int interleaveFrames = 0;  // BenchSettings::interleaveFrames it was measured with
     bool calibrated = false;
     double finishOverheadMs = 0;  // an empty glFinish round trip, subtracted from the wall times
     std::array<PassCalibration, render::kPassCount> calibration;

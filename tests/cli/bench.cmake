@@ -286,3 +286,46 @@ endif()
 if(NOT repeat MATCHES "measured [23] times: the earlier tries compiled shaders")
   message(FATAL_ERROR "stdout does not say the case was measured again:\n${repeat}")
 endif()
+
+# --interleave N: the cases of a scene measured together, in turns of N frames each, so that a
+# machine whose speed swings slows them alike. A turn's first two frames share the pipeline (two
+# frames in flight) with the case before and its last frame's interval ends at the next case's
+# start: neither is counted. On the leaving sphere's scene at 0.5 s a frame, turns of 5 count each
+# case's scene frames 2 and 3 (t = 1 and 1.5 s: the sphere is gone): no sphere in the map in a
+# counted frame, where counting a turn's first frames (t = 0, 0.5 s) would draw it.
+# Each case keeps its own scene time (both measure the same frames), and every counted frame has
+# its wall interval and its GPU times.
+run_penumbra("${OUT}/interleave" interleave "${PENUMBRA}" bench "${OUT}/leaving.json" --techniques hard,pcf-poisson16
+             --interleave 5 --rounds 2 --size 96x64 --frames 2 --warmup-seconds 0 --scene-step 0.5 --no-images
+             --out "${OUT}/interleave")
+file(READ "${OUT}/interleave/bench.json" doc)
+string(JSON recorded GET "${doc}" settings interleave_frames)
+string(JSON count LENGTH "${doc}" cases)
+if(NOT recorded EQUAL 5 OR NOT count EQUAL 4)
+  message(FATAL_ERROR "--interleave 5 --rounds 2: settings record ${recorded}, ${count} cases; expected 5 and 4")
+endif()
+foreach(i 0 1 2 3)
+  string(JSON technique GET "${doc}" cases ${i} technique)
+  string(JSON turn GET "${doc}" cases ${i} measurement interleave_frames)
+  string(JSON frames GET "${doc}" cases ${i} frame_ms count)
+  string(JSON shadowSamples LENGTH "${doc}" cases ${i} samples pass_gpu_ms shadow)
+  string(JSON opaqueSamples LENGTH "${doc}" cases ${i} samples pass_gpu_ms opaque)
+  string(JSON triangles GET "${doc}" cases ${i} shadow_triangles_per_frame)
+  string(JSON errors GET "${doc}" cases ${i} gl_errors)
+  if(NOT turn EQUAL 5 OR NOT frames EQUAL 2 OR NOT shadowSamples EQUAL 2 OR NOT opaqueSamples EQUAL 2 OR NOT errors EQUAL 0)
+    message(FATAL_ERROR "--interleave 5, case ${i} (${technique}): turns of ${turn}, ${frames} frame times, ${shadowSamples} shadow and "
+                        "${opaqueSamples} opaque GPU samples, ${errors} GL errors; expected 5, 2, 2, 2, 0")
+  endif()
+  # The plane alone in the map: 2 triangles (the sphere's hundreds would show in the mean).
+  if(triangles GREATER 10)
+    message(FATAL_ERROR "--interleave 5, case ${i} (${technique}): ${triangles} triangles per frame into the map; the sphere was "
+                        "drawn in a counted frame (a turn's first frames counted, or scene time shared between cases)")
+  endif()
+endforeach()
+string(JSON rows LENGTH "${doc}" rounds)
+if(NOT rows EQUAL 2)
+  message(FATAL_ERROR "--interleave 5 --rounds 2: ${rows} rows of round ratios, expected 2")
+endif()
+if(NOT interleave MATCHES "each scene's cases measured together, in turns of 5 frames each")
+  message(FATAL_ERROR "stdout does not say the cases were interleaved:\n${interleave}")
+endif()
