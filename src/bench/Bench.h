@@ -73,7 +73,8 @@ struct CaseResult {
     bool settled = false;  // warm-up ended because frame times settled, not at its cap
     // Programs linked during the measured frames (gl::Program::linkedSoFar): each repeat of the
     // measurement follows one that linked some, and this counts those of the one kept (0 unless
-    // every try linked one).
+    // every try linked one). Interleaved cases share one measurement: these are its, and so are
+    // glErrors and glWarnings below.
     std::uint64_t programsLinkedMeasuring = 0;
     int measurementsRepeated = 0;
     int interleaveFrames = 0;  // BenchSettings::interleaveFrames it was measured with
