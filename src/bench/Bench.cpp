@@ -111,7 +111,8 @@ private:
     std::size_t next_ = 0;
 };
 
-double millisecondsSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double millisecondsBetween(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double, std::milli>(to - from).count(); }
+double millisecondsSince(Clock::time_point t) { return millisecondsBetween(t, Clock::now()); }
 
 }  // namespace
 
@@ -195,7 +196,7 @@ void warmUp(CaseRun& run, const std::function<void(double)>& progress) {
     Clock::time_point last{};
     for (;;) {
         const Clock::time_point start = run.step();
-        if (run.frameNumber > 1) warm.push_back(std::chrono::duration<double, std::milli>(start - last).count());
+        if (run.frameNumber > 1) warm.push_back(millisecondsBetween(last, start));
         last = start;
         const double elapsed = millisecondsSince(warmStart);
         if (run.frameNumber >= 2 && (warmMs <= 0 || (elapsed >= warmMs && framesSettled(warm)))) {
@@ -219,7 +220,7 @@ void measureAlone(CaseRun& run, const std::function<void(double)>& progress) {
     Clock::time_point last{};
     for (int i = 0;; ++i) {
         const Clock::time_point start = run.step();
-        if (i > 0) run.frameMs.push_back(std::chrono::duration<double, std::milli>(start - last).count());
+        if (i > 0) run.frameMs.push_back(millisecondsBetween(last, start));
         last = start;
         run.triangles += static_cast<double>(run.engine->shadowTriangles());
         const double elapsed = millisecondsSince(measureStart);
@@ -260,7 +261,7 @@ void measureInterleaved(std::vector<std::unique_ptr<CaseRun>>& runs, const Bench
                 measured[k].push_back(run.frameNumber - 1);
                 run.triangles += static_cast<double>(run.engine->shadowTriangles());
             }
-            for (std::size_t f : kept) run.frameMs.push_back(std::chrono::duration<double, std::milli>(starts[f + 1] - starts[f]).count());
+            for (std::size_t f : kept) run.frameMs.push_back(millisecondsBetween(starts[f], starts[f + 1]));
         }
         const double elapsed = millisecondsSince(measureStart);
         bool done = true;
