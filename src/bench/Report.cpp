@@ -88,6 +88,7 @@ std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results) {
         }
         row.medianFrameMs = summarize(row.frameMs).median;
         row.medianRatio = summarize(row.ratios).median;
+        row.ratioInterval = medianInterval(row.ratios);
         rows.push_back(std::move(row));
     }
     return rows;
@@ -97,7 +98,11 @@ static json roundRatiosJson(const std::vector<CaseResult>& results) {
     json rows = json::array();
     for (const RoundRatio& q : roundRatios(results))
         rows.push_back({{"label", q.label}, {"scene_name", q.sceneName}, {"base", q.base}, {"frame_ms_median_per_round", q.frameMs},
-                        {"ratio_to_base_per_round", q.ratios}, {"frame_ms_median", q.medianFrameMs}, {"ratio_to_base_median", q.medianRatio}});
+                        {"ratio_to_base_per_round", q.ratios}, {"frame_ms_median", q.medianFrameMs}, {"ratio_to_base_median", q.medianRatio},
+                        {"ratio_to_base_median_interval",
+                         q.ratioInterval.found ? json{{"low", q.ratioInterval.low}, {"high", q.ratioInterval.high},
+                                                      {"coverage", q.ratioInterval.coverage}}
+                                               : json(nullptr)}});
     return rows;
 }
 

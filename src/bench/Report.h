@@ -86,6 +86,7 @@ struct RoundRatio {
     std::string label, sceneName, base;
     std::vector<double> frameMs, ratios;  // per round: the frames' pairedMedian (wall clock), ÷ the base's
     double medianFrameMs = 0, medianRatio = 0;
+    MedianInterval ratioInterval;  // of medianRatio, over the rounds (6 or more)
 };
 std::vector<RoundRatio> roundRatios(const std::vector<CaseResult>& results);
 

@@ -33,6 +33,21 @@ double pairedMedian(const std::vector<double>& samples) {
     return summarize(std::move(pairs)).median;
 }
 
+MedianInterval medianInterval(std::vector<double> samples, double coverage) {
+    const std::size_t n = samples.size();
+    std::sort(samples.begin(), samples.end());
+    MedianInterval interval;
+    double below = 0.0, term = std::pow(0.5, static_cast<double>(n));  // P(B <= k - 1) and P(B = k - 1)
+    for (std::size_t k = 1; 2 * k <= n + 1; ++k) {
+        below += term;
+        term *= static_cast<double>(n - (k - 1)) / static_cast<double>(k);
+        const double covered = 1.0 - 2.0 * below;
+        if (covered < coverage) break;
+        interval = {true, samples[k - 1], samples[n - k], covered};
+    }
+    return interval;
+}
+
 bool framesSettled(const std::vector<double>& frameMs) {
     if (frameMs.size() < 12) return false;
     const auto mid = [&](std::size_t from) {

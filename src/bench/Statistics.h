@@ -22,6 +22,17 @@ Summary summarize(std::vector<double> samples);
 // only two pairs out of the middle.
 double pairedMedian(const std::vector<double>& samples);
 
+// A distribution-free interval for the median of whatever the samples are drawn from: the order
+// statistics x(k) and x(n + 1 - k), with k the largest rank at which a Binomial(n, 1/2) count
+// leaves at least `coverage` between them (coverage = 1 - 2 P(B <= k - 1); e.g. 12 samples: x(3)
+// and x(10), 96.1 %). It assumes only independent samples: the bench's rounds, not the frames of
+// one round, which the machine's speed swings tie together. Not found below 6 samples at 95 %.
+struct MedianInterval {
+    bool found = false;
+    double low = 0, high = 0, coverage = 0;
+};
+MedianInterval medianInterval(std::vector<double> samples, double coverage = 0.95);
+
 // The bench's warm-up ends once the last 6 frame times' pairedMedian is within 5 % of the 6
 // before's (pairs, as frames that alternate short and long never settled by the plain median of 5:
 // hard on scenes/glass.json ran to the warm-up's cap in 7 of 10 cases at stop 63).

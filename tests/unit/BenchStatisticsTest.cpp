@@ -136,6 +136,24 @@ TEST(FramesSettled, AlternatingFramesSettleAndFallingOnesDoNot) {
 // `bench --rounds`: the list {none, hard} on scene a and {hard} on scene b, three rounds. Within a
 // round the machine's speed moves every case alike (here by a factor per round), so the ratios to
 // each scene's first case hold while the frame times swing.
+TEST(MedianInterval, TakesTheOrderStatisticsThatABinomialCountPutsTheMedianBetween) {
+    // 12 rounds: P(B <= 2) = (1 + 12 + 66) / 4096, so x(3) and x(10) hold the median with 1 - 2 x 79/4096.
+    const MedianInterval twelve = medianInterval({12, 3, 1, 5, 7, 9, 11, 2, 4, 6, 8, 10});
+    ASSERT_TRUE(twelve.found);
+    EXPECT_EQ(twelve.low, 3.0);
+    EXPECT_EQ(twelve.high, 10.0);
+    EXPECT_DOUBLE_EQ(twelve.coverage, 1.0 - 2.0 * 79.0 / 4096.0);
+    // 6 rounds: only the extremes, 1 - 2/64; 5 rounds: 1 - 2/32 < 95 %, none.
+    const MedianInterval six = medianInterval({1.2, 1.0, 1.1, 1.3, 0.9, 1.25});
+    ASSERT_TRUE(six.found);
+    EXPECT_EQ(six.low, 0.9);
+    EXPECT_EQ(six.high, 1.3);
+    EXPECT_DOUBLE_EQ(six.coverage, 1.0 - 2.0 / 64.0);
+    EXPECT_FALSE(medianInterval({1, 2, 3, 4, 5}).found);
+    EXPECT_FALSE(medianInterval({}).found);
+    EXPECT_TRUE(medianInterval({1, 2, 3, 4, 5}, 0.9).found);
+}
+
 TEST(RoundRatios, DivideEachCaseByItsScenesFirstCaseRoundByRoundAndTakeTheMedians) {
     std::vector<CaseResult> results;
     const double speed[3] = {1.0, 2.0, 0.5};
@@ -158,6 +176,7 @@ TEST(RoundRatios, DivideEachCaseByItsScenesFirstCaseRoundByRoundAndTakeTheMedian
     EXPECT_DOUBLE_EQ(rows[1].ratios[1], 1.8);   // 15 x 2 x 1.2 against 10 x 2
     EXPECT_DOUBLE_EQ(rows[1].medianRatio, 1.5);  // of 1.5, 1.8, 1.5
     EXPECT_DOUBLE_EQ(rows[1].medianFrameMs, 15.0);  // of 15, 36, 7.5
+    EXPECT_FALSE(rows[1].ratioInterval.found);  // 3 rounds are too few for 95 %
     EXPECT_EQ(rows[2].sceneName, "b");
     EXPECT_EQ(rows[2].base, "hard");  // scene b's first case is itself
     EXPECT_EQ(rows[2].medianRatio, 1.0);
