@@ -1,5 +1,6 @@
 #include "app/BenchCommand.h"
 
+#include "app/MallocTuning.h"
 #include "bench/Report.h"
 #include "bench/Suites.h"
 #include "gl/Debug.h"
@@ -14,7 +15,6 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
-#include <malloc.h>
 #include <set>
 #include <unistd.h>
 
@@ -24,22 +24,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-// glibc gives llvmpipe's per-frame binning memory back to the kernel and faults it in again,
-// which made the same pass 2-5x slower in some processes than in others (PLATFORM.md, "Timing
-// on llvmpipe"). Keeping it mapped makes runs comparable; the report records what was in force.
-json configureMalloc(bool tuned) {
-    const char* tunables = std::getenv("GLIBC_TUNABLES");
-    json m = {{"mode", tuned ? "tuned" : "default"}, {"GLIBC_TUNABLES", tunables ? json(tunables) : json(nullptr)}};
-    if (tuned) {
-        mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-        mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-        mallopt(M_TOP_PAD, 256 * 1024 * 1024);
-        m["mallopt"] = {{"M_MMAP_THRESHOLD", 32 * 1024 * 1024}, {"M_TRIM_THRESHOLD", std::numeric_limits<int>::max()},
-                        {"M_TOP_PAD", 256 * 1024 * 1024}};
-    }
-    return m;
-}
 
 std::string nowIso() {
     const std::time_t t = std::time(nullptr);

@@ -1,5 +1,6 @@
 #include "app/RenderCommand.h"
 
+#include "app/MallocTuning.h"
 #include "util/OutputFiles.h"
 #include "gl/Debug.h"
 #include "gl/Object.h"
@@ -110,6 +111,7 @@ std::vector<SizeStep> sizeCycle(const BatchJob& job) {
 }  // namespace
 
 BatchResult renderBatch(const BatchJob& job) {
+    const nlohmann::json mallocSettings = configureMalloc(job.tunedMalloc);
     scene::Scene scene = scene::io::loadScene(job.scene);
     if (job.width <= 0 || job.height <= 0 || job.width > 16384 || job.height > 16384)
         throw std::invalid_argument("--size must be within 1x1..16384x16384");
@@ -219,6 +221,7 @@ BatchResult renderBatch(const BatchJob& job) {
     nlohmann::json stats = {
         {"device", result.device},
         {"egl_platform", context->platformName()},
+        {"malloc", mallocSettings},
         {"data_dir", paths::dataRoot().string()},
         {"scene", job.scene.string()},
         {"technique", renderer.technique().name()},

@@ -18,6 +18,7 @@ struct BatchJob {
     float fps = 30.0f;
     std::filesystem::path outDir = "out";
     std::string eglPlatform = "auto";
+    bool tunedMalloc = true;  // app/MallocTuning.h
     // Soak runs (issue 12): every N frames the next technique of the registry (0: never), every
     // M frames the next output size and shadow-map resolution (0: never); a PNG every K frames.
     int cycleTechniquesEvery = 0;

@@ -1,6 +1,7 @@
 // The window front-end: GLFW input -> camera controller / renderer options; ImGui panel.
 #include "app/Viewer.h"
 
+#include "app/MallocTuning.h"
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "platform/GlfwWindow.h"
@@ -305,6 +306,7 @@ void labelSplit(const render::Renderer& left, const render::Renderer& right, flo
 int runViewer(const ViewerOptions& opts) {
     // Scene, renderer and camera controller are replaced whole when a file is dropped on the
     // window (seed 001's way of opening a scene); each frame works on the current ones.
+    log::info("glibc malloc: {}", configureMalloc(opts.tunedMalloc)["mode"].get<std::string>());
     auto scenePtr = std::make_unique<scene::Scene>(scene::io::loadScene(opts.scene));
     platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
     if (opts.debugContext) gl::enableDebugOutput();

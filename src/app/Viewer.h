@@ -13,6 +13,7 @@ struct ViewerOptions {
     int width = 800, height = 600;
     std::string controller;  // "" = the scene's
     bool debugContext = false;
+    bool tunedMalloc = true;  // app/MallocTuning.h
     int exitAfterFrames = 0;  // > 0: quit after that many frames (scripted runs, screenshots)
     // Robustness drill (issue 12): every frame the next of minimise, restore, 1x1, 8192x8192,
     // 800x600 and a switch to the next technique (exitAfterFrames counts drawn frames only).

@@ -1,5 +1,6 @@
 // penumbra command line: parses arguments and calls the core. No GL calls here.
 #include "app/BenchCommand.h"
+#include "app/MallocTuning.h"
 #include "bench/Suites.h"
 #include "app/ReferenceCommands.h"
 #include "app/RenderCommand.h"
@@ -80,6 +81,7 @@ int main(int argc, char** argv) {
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
     app::SeedChoices viewSeed, renderSeed;
     app::addSeedChoices(*view, viewSeed);
+    app::addMallocOption(*view, viewer.tunedMalloc);
     view->add_flag("--storm", viewer.resizeStorm, "robustness drill: minimise, restore, 1x1, 8192x8192 and technique switches, every frame");
 
     auto* rend = cli.add_subcommand("render", "render frames headless (EGL) to PNG + stats.json");
@@ -98,6 +100,7 @@ int main(int argc, char** argv) {
     rend->add_option("--split", job.split, "split view: the columns right of the divider with TECHNIQUE[:name=value,...]");
     rend->add_option("--split-at", job.splitAt, "split view: share of the width left of the divider (default 0.5)")->check(CLI::Range(0.0f, 1.0f));
     app::addEglPlatform(*rend, job.eglPlatform);
+    app::addMallocOption(*rend, job.tunedMalloc);
     app::addSeedChoices(*rend, renderSeed);
     std::string renderController;  // -m on render: accepted for batch files that also open windows
 
@@ -198,10 +201,7 @@ int main(int argc, char** argv) {
     benchCmd->add_flag("--quality", bench.quality, "add compare's metrics and heat maps (ray-traced reference of the first scene)");
     benchCmd->add_option("--samples", bench.samples, "reference samples per pixel for --quality (default 16)")->check(CLI::Range(1, 4096));
     benchCmd->add_flag("!--no-images", bench.settings.images, "no picture per case");
-    benchCmd->add_option_function<std::string>(
-        "--malloc", [&bench](const std::string& m) { bench.tunedMalloc = m == "tuned"; },
-        "tuned (default: keep llvmpipe's memory mapped, see PLATFORM.md) | default (glibc as configured)")
-        ->check(CLI::IsMember({"tuned", "default"}));
+    app::addMallocOption(*benchCmd, bench.tunedMalloc);
     app::addRenderOptions(*benchCmd, bench.settings.render, {.technique = false, .shadowResolution = false, .overlay = false});
     app::addEglPlatform(*benchCmd, bench.eglPlatform);
 

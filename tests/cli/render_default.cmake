@@ -14,6 +14,12 @@ endif()
 if(NOT errors EQUAL 0)
   message(FATAL_ERROR "GL errors during the default-scene run: ${errors}")
 endif()
+# glibc's malloc is tuned for llvmpipe by default (app/MallocTuning.h), and the run records it.
+string(JSON mallocMode GET "${stats}" malloc mode)
+string(JSON mmapThreshold GET "${stats}" malloc mallopt M_MMAP_THRESHOLD)
+if(NOT mallocMode STREQUAL "tuned" OR NOT mmapThreshold EQUAL 33554432)
+  message(FATAL_ERROR "stats.json: malloc mode '${mallocMode}', M_MMAP_THRESHOLD ${mmapThreshold}; expected the default 'tuned', 32 MiB")
+endif()
 # The green pane's coloured shadow falls on part of the ground: the ground is split, the far
 # objects take the program without tint (render/TintReach.h).
 string(JSON untinted GET "${stats}" frames 0 tint_shading untinted_draws)
@@ -29,9 +35,15 @@ endif()
 
 # Split view from the command line: the right side's technique and parameters reach a renderer of
 # their own (the pixels themselves are SplitViewTest's), and a bad side is named.
+# (Also glibc's malloc as configured, which the run records.)
 run_penumbra("${OUT}" split "${PENUMBRA}" render --size 64x48 --frames 1 --split "cssm2:filter=box64" --split-at 0.25
-             --out "${OUT}/split")
+             --malloc default --out "${OUT}/split")
 file(READ "${OUT}/split/stats.json" stats)
+string(JSON mallocMode GET "${stats}" malloc mode)
+string(JSON tunedBy ERROR_VARIABLE notTuned GET "${stats}" malloc mallopt)
+if(NOT mallocMode STREQUAL "default" OR NOT notTuned)
+  message(FATAL_ERROR "--malloc default: stats.json's malloc mode '${mallocMode}', mallopt '${tunedBy}'; expected 'default', none")
+endif()
 string(JSON left GET "${stats}" split left)
 string(JSON right GET "${stats}" split right)
 string(JSON column GET "${stats}" split divider_column)
