@@ -304,9 +304,9 @@ void labelSplit(const render::Renderer& left, const render::Renderer& right, flo
 }
 
 int runViewer(const ViewerOptions& opts) {
+    log::info("glibc malloc: {}", configureMalloc(opts.tunedMalloc)["mode"].get<std::string>());
     // Scene, renderer and camera controller are replaced whole when a file is dropped on the
     // window (seed 001's way of opening a scene); each frame works on the current ones.
-    log::info("glibc malloc: {}", configureMalloc(opts.tunedMalloc)["mode"].get<std::string>());
     auto scenePtr = std::make_unique<scene::Scene>(scene::io::loadScene(opts.scene));
     platform::GlfwWindow window(opts.width, opts.height, "penumbra - " + opts.scene.filename().string(), opts.debugContext);
     if (opts.debugContext) gl::enableDebugOutput();

@@ -133,9 +133,7 @@ TEST(FramesSettled, AlternatingFramesSettleAndFallingOnesDoNot) {
     EXPECT_TRUE(framesSettled(std::vector<double>(12, 50.0)));
 }
 
-// `bench --rounds`: the list {none, hard} on scene a and {hard} on scene b, three rounds. Within a
-// round the machine's speed moves every case alike (here by a factor per round), so the ratios to
-// each scene's first case hold while the frame times swing.
+// `bench --rounds`' interval for a median ratio (from 6 rounds), against counts worked out by hand.
 TEST(MedianInterval, TakesTheOrderStatisticsThatABinomialCountPutsTheMedianBetween) {
     // 12 rounds: P(B <= 2) = (1 + 12 + 66) / 4096, so x(3) and x(10) hold the median with 1 - 2 x 79/4096.
     const MedianInterval twelve = medianInterval({12, 3, 1, 5, 7, 9, 11, 2, 4, 6, 8, 10});
@@ -154,6 +152,9 @@ TEST(MedianInterval, TakesTheOrderStatisticsThatABinomialCountPutsTheMedianBetwe
     EXPECT_TRUE(medianInterval({1, 2, 3, 4, 5}, 0.9).found);
 }
 
+// `bench --rounds`: the list {none, hard} on scene a and {hard} on scene b, three rounds. Within a
+// round the machine's speed moves every case alike (here by a factor per round), so the ratios to
+// each scene's first case hold while the frame times swing.
 TEST(RoundRatios, DivideEachCaseByItsScenesFirstCaseRoundByRoundAndTakeTheMedians) {
     std::vector<CaseResult> results;
     const double speed[3] = {1.0, 2.0, 0.5};
