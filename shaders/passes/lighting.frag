@@ -130,13 +130,21 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, vec3 albedo, inout LightSum sum) {
     if (i == uDebugLight) sum.debugVisibility = visibility;
 #endif
     if (NdotL <= 0.0) return;
+#ifdef MATERIAL_NO_SPECULAR
+    // uSpecular is (0, 0, 0): the highlight would add exactly 0 (LightingPrograms).
+    vec3 highlight = vec3(0.0);
+#else
     vec3 H = normalize(L + V);
+    vec3 highlight = uSpecular * pow(max(dot(N, H), 0.0), uShininess);  // Blinn-Phong
+#endif
 #ifdef DEBUG_OUTPUT
-    vec3 unshadowed = (albedo * NdotL + uSpecular * pow(max(dot(N, H), 0.0), uShininess)) * radiance;
+    vec3 unshadowed = (albedo * NdotL + highlight) * radiance;
     if (i == uDebugLight) sum.debugContribution = unshadowed;
 #endif
     sum.diffuse += albedo * NdotL * radiance * visibility;
-    sum.specular += uSpecular * pow(max(dot(N, H), 0.0), uShininess) * radiance * visibility;
+#ifndef MATERIAL_NO_SPECULAR
+    sum.specular += highlight * radiance * visibility;
+#endif
 }
 
 void main() {

@@ -97,7 +97,11 @@ fs::path writeGridScene(const fs::path& dir, const std::string& name, std::size_
 
     const glm::vec3 glass[4] = {{0.9f, 0.15f, 0.1f}, {0.1f, 0.85f, 0.15f}, {0.15f, 0.3f, 0.95f}, {0.95f, 0.7f, 0.1f}};
     nlohmann::json objects = nlohmann::json::array();
-    objects.push_back({{"name", "ground"}, {"shape", "plane"}, {"size", {40, 40}}, {"material", {{"diffuse", {0.6, 0.6, 0.58}}}}});
+    // No highlight on the opaque shapes: bench/peers/osgshadow draws the same triangles with an
+    // osg::Material whose specular is black (its default), and the frames compare like for like.
+    const nlohmann::json noSpecular = {0, 0, 0};
+    objects.push_back({{"name", "ground"}, {"shape", "plane"}, {"size", {40, 40}},
+                       {"material", {{"diffuse", {0.6, 0.6, 0.58}}, {"specular", noSpecular}}}});
     std::ofstream whole(dir / (name + ".obj"));
     whole << "# " << name << ": the same triangles as " << name << ".json in one file\n";
     std::size_t base = 0;
@@ -114,7 +118,7 @@ fs::path writeGridScene(const fs::path& dir, const std::string& name, std::size_
                 const glm::vec3& t = glass[(index / 4) % 4];
                 o["material"] = {{"diffuse", {t.x, t.y, t.z}}, {"alpha", 0.6}, {"transmission", {t.x, t.y, t.z}}};
             } else {
-                o["material"] = {{"diffuse", {0.8, 0.78, 0.75}}};
+                o["material"] = {{"diffuse", {0.8, 0.78, 0.75}}, {"specular", noSpecular}};
             }
             objects.push_back(o);
             writeObj(whole, isSphere ? sphere : ring, at, base);

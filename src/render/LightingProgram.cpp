@@ -36,13 +36,16 @@ LightingPrograms::LightingPrograms(std::filesystem::path lookup, std::vector<std
 const gl::Program& LightingPrograms::of(const scene::Material& material, bool translucent, TintLookup tint, unsigned unlit,
                                         unsigned unshadowed) {
     const bool untextured = material.diffuseTexture < 0, alphaTested = material.alphaCutoff > 0.0f;
-    const unsigned key = (untextured ? 1u : 0u) + (translucent ? 2u : 0u) + (alphaTested ? 4u : 0u) + 8u * static_cast<unsigned>(tint) + 24u * unlit;
+    const bool noSpecular = material.specular == glm::vec3(0.0f);
+    const unsigned key = (untextured ? 1u : 0u) + (translucent ? 2u : 0u) + (alphaTested ? 4u : 0u) + (noSpecular ? 8u : 0u) +
+                         16u * static_cast<unsigned>(tint) + 48u * unlit;
     gl::Program& build = builds_[key + (std::uint64_t{unshadowed} << 32)];
     if (!build.id()) {
         std::vector<std::string> defines = defines_;
         if (untextured) defines.emplace_back("MATERIAL_UNTEXTURED 1");
         if (translucent) defines.emplace_back("MATERIAL_TRANSLUCENT 1");
         if (!alphaTested) defines.emplace_back("MATERIAL_NO_ALPHA_TEST 1");
+        if (noSpecular) defines.emplace_back("MATERIAL_NO_SPECULAR 1");
         if (tint == TintLookup::Untinted) defines.emplace_back("RECEIVER_UNTINTED 1");
         if (tint == TintLookup::BehindLayers) defines.emplace_back("RECEIVER_BEHIND_LAYERS 1");
         if (unlit != 0) defines.emplace_back("SKIPPED_LIGHTS " + std::to_string(unlit) + "u");

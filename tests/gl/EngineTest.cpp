@@ -285,6 +285,39 @@ TEST_P(DepthPrepass, ChangesNoPixel) {
 
 INSTANTIATE_TEST_SUITE_P(Techniques, DepthPrepass, ::testing::Values("hard", "pcss", "cssm2", "shadow-volumes"));
 
+// A material with specular (0, 0, 0) is shaded by a build without Blinn-Phong's highlight
+// (LightingPrograms, MATERIAL_NO_SPECULAR). It must change no pixel: against a specular of 1e-30,
+// which takes the full build and adds nothing a float can hold beside the diffuse light, every
+// byte is the same, for an opaque sphere and a glass pane in front of it. A specular material
+// beside them still shines: the specialisation must not reach it.
+TEST(Lighting, AMaterialWithoutSpecularLosesOnlyAHighlightOfZero) {
+    const auto sceneWith = [](const std::string& specular) {
+        return sceneFromJson(R"({
+          "camera": { "position": [0, 1.5, 5], "target": [0, 0.8, 0], "fov_deg": 45 },
+          "ambient": [0.05, 0.05, 0.05],
+          "lights": [ { "type": "directional", "direction": [-0.3, -0.6, -0.75], "shadow": { "resolution": 512 } } ],
+          "objects": [ { "shape": "plane", "size": [10, 10], "material": { "specular": )" + specular + R"( } },
+            { "shape": "sphere", "radius": 0.8, "position": [0, 0.8, 0],
+              "material": { "diffuse": [0.2, 0.2, 0.2], "specular": )" + specular + R"(, "shininess": 20 } },
+            { "shape": "plane", "size": [1, 1], "position": [1.2, 1.0, 1.5], "rotation_deg": [90, 0, 0],
+              "material": { "specular": )" + specular + R"(, "transmission": [0.1, 0.9, 0.1] } } ] })");
+    };
+    const render::RenderOptions options{.technique = "hard"};
+    scene::Scene none = sceneWith("[0, 0, 0]"), tiny = sceneWith("[1e-30, 1e-30, 1e-30]"), shiny = sceneWith("[0.5, 0.5, 0.5]");
+    const std::vector<std::uint8_t> withoutHighlight = renderRgba8(none, options, 160, 120);
+    const std::vector<std::uint8_t> fullBuild = renderRgba8(tiny, options, 160, 120);
+    const std::vector<std::uint8_t> highlighted = renderRgba8(shiny, options, 160, 120);
+    ASSERT_EQ(withoutHighlight.size(), fullBuild.size());
+    std::size_t differing = 0;
+    int brightest = 0;
+    for (std::size_t i = 0; i < withoutHighlight.size(); ++i) {
+        differing += withoutHighlight[i] != fullBuild[i];
+        brightest = std::max(brightest, int(highlighted[i]) - int(withoutHighlight[i]));
+    }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GE(brightest, 60) << "the specular sphere's highlight (bytes above the same without specular)";
+}
+
 TEST(Fog, FarSurfacesFadeToTheBackground) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 1, 0], "target": [0, 1, -1], "fov_deg": 60, "far": 100 },
