@@ -38,17 +38,19 @@ enum class TintLookup { Whole, Untinted, BehindLayers };
 
 // The lighting program in up to 48 builds: with or without a diffuse texture, for opaque or
 // translucent surfaces, with or without an alpha test, with or without a specular term, and each
-// TintLookup. MATERIAL_UNTEXTURED
-// never samples the texture: llvmpipe runs the sample under `uHasTexture != 0` for every fragment
-// whatever the uniform says (measured, default scene, none: ~2.5 ms of a 21 ms opaque pass).
-// MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
-// layers (CSSM's nearest-layer statistics). MATERIAL_NO_ALPHA_TEST (materials without a cutoff)
-// leaves the alpha test's `discard` out, as DepthCasterProgram does for casters.
-// MATERIAL_NO_SPECULAR (specular (0, 0, 0), as osgShadow's peer scene's material and many
-// models' have) leaves Blinn-Phong's highlight out, which would add exactly 0: measured on the
-// 98k grid with its camera (llvmpipe, `none`, switched every 8 frames in one process), the
-// opaque pass 20.5 -> 14.6 ms. The
-// build the scene needs first is compiled at once, so shader errors still surface there; the
+// TintLookup.
+// - MATERIAL_UNTEXTURED never samples the texture: llvmpipe runs the sample under
+//   `uHasTexture != 0` for every fragment whatever the uniform says (measured, default scene,
+//   none: ~2.5 ms of a 21 ms opaque pass).
+// - MATERIAL_TRANSLUCENT lets a lookup pick what suits receivers that are themselves translucent
+//   layers (CSSM's nearest-layer statistics).
+// - MATERIAL_NO_ALPHA_TEST (materials without a cutoff) leaves the alpha test's `discard` out, as
+//   DepthCasterProgram does for casters.
+// - MATERIAL_NO_SPECULAR (specular (0, 0, 0), as the osgShadow peer's material has) leaves
+//   Blinn-Phong's highlight out, which would add exactly 0 there. Measured on the 98k grid from
+//   its camera (llvmpipe, `none`, switched every 8 frames in one process): opaque pass 20.5 ->
+//   14.6 ms.
+// The build the scene needs first is compiled at once, so shader errors still surface there; the
 // others when a surface first asks for them.
 class LightingPrograms {
 public:
