@@ -350,25 +350,11 @@ void finish(CaseRun& run) {
     }
 }
 
-CaseResult runCase(scene::Scene& scene, const BenchCase& c, const BenchSettings& settings,
-                   const std::function<void(double)>& progress) {
-    gl::resetDebugErrorCount();
-    const int warningsBefore = gl::debugWarningCount();
-    FramePacer pacer;
-    CaseRun run(scene, c, settings, pacer);
-    warmUp(run, progress);
-    measureUntilCompiled({&run}, [&] { measureAlone(run, progress); });
-    finish(run);
-    run.r.glErrors = gl::debugErrorCount();
-    run.r.glWarnings = gl::debugWarningCount() - warningsBefore;
-    progress(1.0);
-    return std::move(run.r);
-}
-
-// Cases of one scene measured together (measureInterleaved): each warmed up alone, then turns.
-// GL errors and warnings are the group's, given to each of its cases.
-std::vector<CaseResult> runInterleaved(scene::Scene& scene, const std::vector<BenchCase>& cases, const BenchSettings& settings,
-                                       const std::function<void(std::size_t, double)>& progress) {
+// The cases of one scene and round that measure together (with settings.interleaveFrames, in turns:
+// measureInterleaved), or one case alone (measureAlone). Each is warmed up alone first. GL errors
+// and warnings are the group's, given to each of its cases.
+std::vector<CaseResult> runGroup(scene::Scene& scene, const std::vector<BenchCase>& cases, const BenchSettings& settings,
+                                 const std::function<void(std::size_t, double)>& progress) {
     gl::resetDebugErrorCount();
     const int warningsBefore = gl::debugWarningCount();
     FramePacer pacer;
@@ -379,7 +365,11 @@ std::vector<CaseResult> runInterleaved(scene::Scene& scene, const std::vector<Be
         all.push_back(runs.back().get());
         warmUp(*runs.back(), [&](double f) { progress(i, f); });
     }
-    measureUntilCompiled(all, [&] { measureInterleaved(runs, settings, [&](double f) { progress(0, f); }); });
+    const auto measured = [&](double f) { progress(0, f); };
+    measureUntilCompiled(all, [&] {
+        if (settings.interleaveFrames > 0) measureInterleaved(runs, settings, measured);
+        else measureAlone(*runs.front(), measured);  // runBench groups one case then
+    });
     std::vector<CaseResult> results;
     for (auto& run : runs) finish(*run);
     for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -411,13 +401,9 @@ std::vector<CaseResult> runBench(const std::vector<BenchCase>& cases, const Benc
         const auto report = [&](std::size_t k, double fraction) {
             if (progress) progress(i + k, cases.size(), cases[i + k], fraction);
         };
-        std::vector<CaseResult> group;
-        if (settings.interleaveFrames > 0)
-            group = runInterleaved(*scene, std::vector<BenchCase>(cases.begin() + static_cast<std::ptrdiff_t>(i),
-                                                                   cases.begin() + static_cast<std::ptrdiff_t>(end)),
-                                   settings, report);
-        else
-            group.push_back(runCase(*scene, c, settings, [&](double f) { report(0, f); }));
+        std::vector<CaseResult> group = runGroup(
+            *scene, std::vector<BenchCase>(cases.begin() + static_cast<std::ptrdiff_t>(i), cases.begin() + static_cast<std::ptrdiff_t>(end)),
+            settings, report);
         for (CaseResult& r : group) {
             r.sceneName = scene->source.empty() ? c.scene.stem().string() : scene->source.stem().string();
             r.sceneTriangles = scene->triangleCount();
