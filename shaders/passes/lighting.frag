@@ -2,6 +2,7 @@
 // Forward Blinn-Phong in linear space (Blinn 1977; Mátl 2013 §5.2):
 //   ambient*diffuse + sum_lights (diffuse*max(N.L,0) + specular) * colour*intensity * visibility
 // where visibility (rgb, coloured) comes from the active shadow technique's lookup.
+#include "../common/color.glsl"
 #include "../common/material.glsl"
 #include "../common/lights.glsl"
 #include "shadow_lookup.glsl"
@@ -212,6 +213,12 @@ void main() {
         outColor = vec4(ambient + diffuse + specular, 1.0);
 #ifdef FOG_IN_SHADING
         outColor.rgb = mix(outColor.rgb, uBackground, fogAmount(length(P - uCameraPos)));
+#endif
+#ifdef ENCODE_SRGB_IN_SHADER
+        // The opaque pass writes the frame's sRGB bytes itself (Renderer::render): cheaper than
+        // llvmpipe's sRGB store, and within 1/255 of it. Translucent surfaces, below, blend and
+        // stay linear: GL encodes them.
+        outColor.rgb = linearToSrgbFast(outColor.rgb);
 #endif
         outTransmit = vec4(0.0);
         return;

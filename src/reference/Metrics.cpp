@@ -1,5 +1,7 @@
 #include "reference/Metrics.h"
 
+#include "util/Srgb.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -62,9 +64,7 @@ std::vector<std::uint8_t> heatMap(const std::vector<float>& e, const std::vector
 
 std::vector<std::uint8_t> encodeSrgb(const std::vector<glm::vec3>& lin, int w, int h) {
     return encode(w, h, [&](std::size_t i) {
-        glm::vec3 c = glm::clamp(lin[i], 0.0f, 1.0f);
-        for (int k = 0; k < 3; ++k) c[k] = c[k] <= 0.0031308f ? 12.92f * c[k] : 1.055f * std::pow(c[k], 1.0f / 2.4f) - 0.055f;
-        return c;
+        return glm::vec3(util::linearToSrgb(lin[i].r), util::linearToSrgb(lin[i].g), util::linearToSrgb(lin[i].b));
     });
 }
 

@@ -8,6 +8,7 @@
 #include "render/MeshClusters.h"
 #include "util/Digest.h"
 #include "util/Log.h"
+#include "util/Srgb.h"
 
 #include <algorithm>
 #include <chrono>
@@ -329,24 +330,40 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
     const bool shaded = options_.output == OutputMode::Shaded;
     const GLuint frameFbo = srgbFrame_ ? srgb_.begin(target, width, height, depth_) : hdrFbo_.id();
-    glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
+    // An sRGB frame's opaque surfaces write its bytes unblended, their shader encoding sRGB itself
+    // (ENCODE_SRGB_IN_SHADER, SrgbTarget::bytesFramebuffer). What blends over them (translucent
+    // surfaces, debug lines) draws through the sRGB view, which GL encodes and blends in linear.
+    // The clear goes with the opaque pass: llvmpipe runs each framebuffer binding's commands as
+    // a scene of its own, and a clear alone in one costs a store and a load of every tile.
+    const GLuint opaqueFbo = srgbFrame_ ? srgb_.bytesFramebuffer() : frameFbo;
+    bool srgbView = false;
+    const auto throughSrgbView = [&] {
+        if (!srgbFrame_ || srgbView) return;
+        glBindFramebuffer(GL_FRAMEBUFFER, frameFbo);
+        glEnable(GL_FRAMEBUFFER_SRGB);
+        srgbView = true;
+    };
+    glBindFramebuffer(GL_FRAMEBUFFER, opaqueFbo);
     glViewport(0, 0, width, height);
-    if (srgbFrame_) glEnable(GL_FRAMEBUFFER_SRGB);  // encoded on the way in, blended in linear
     // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
     // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
-    const glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
+    glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
+    if (srgbFrame_) clear = glm::vec4(util::linearToSrgb(clear.r), util::linearToSrgb(clear.g), util::linearToSrgb(clear.b), clear.a);
     // NVIDIA validates the current program's samplers on a clear: another engine's program, still
     // current though deleted, must not be judged against this frame's texture units.
     glUseProgram(0);
-    glClearNamedFramebufferfv(frameFbo, GL_COLOR, 0, &clear.x);
+    glClearNamedFramebufferfv(opaqueFbo, GL_COLOR, 0, &clear.x);
     const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(frameFbo, GL_DEPTH, 0, &farDepth);
+    glClearNamedFramebufferfv(opaqueFbo, GL_DEPTH, 0, &farDepth);
     {
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
         drawDepthFirst(draws, camera, aspect);
         drawSurfaces(draws, false, camera, aspect, &tintSplit);
-        if (options_.debugOverlay) drawDebugLines(camera, aspect);
+        if (options_.debugOverlay) {
+            throughSrgbView();  // linear colours
+            drawDebugLines(camera, aspect);
+        }
         timer_.end(Pass::Opaque);
     }
     {
@@ -357,6 +374,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         const TransparencyMode mode = options_.transparency;
         if (shaded ? isSorted(mode) : options_.debugTranslucent) {
             const bool anyTranslucent = std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.visible && d.translucent; });
+            if (anyTranslucent) throughSrgbView();
             fogDepth_ = fogInShading() && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
             drawSurfaces(draws, true, camera, aspect, &tintSplit);
             fogDepth_ = nullptr;
@@ -1098,11 +1116,13 @@ bool Renderer::shadesIntoSrgb() const {
 // The lighting shader applies the fog (FOG_IN_SHADING) where no resolve pass will.
 bool Renderer::fogInShading() const { return shadesIntoSrgb() && scene_.fog.enabled; }
 
+// ENCODE_SRGB_IN_SHADER where the opaque pass writes sRGB bytes itself (SrgbTarget::bytesFramebuffer),
 // FOG_IN_SHADING where the lighting shader applies the fog, DEBUG_OUTPUT where it writes a debug
 // channel instead of the shaded colour. Shaded builds hold no debug code: llvmpipe ran the
 // channels' uniform tests and their per-light bookkeeping for every fragment (measured, default
 // scene, none, hard and cssm2: about 1-2 ms of a 40-60 ms opaque pass; 98k grid, none: 0.8 of 31 ms).
 std::vector<std::string> Renderer::withOutputDefines(std::vector<std::string> layout) const {
+    if (shadesIntoSrgb()) layout.emplace_back("ENCODE_SRGB_IN_SHADER");
     if (fogInShading()) layout.emplace_back("FOG_IN_SHADING");
     if (options_.output != OutputMode::Shaded) layout.emplace_back("DEBUG_OUTPUT");
     return layout;

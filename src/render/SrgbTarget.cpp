@@ -40,16 +40,20 @@ GLuint SrgbTarget::begin(GLuint output, int width, int height, const gl::Texture
     intoOutput_ = colour != 0;
     if (intoOutput_) {
         outputView_ = viewOf(colour, GL_SRGB8_ALPHA8, width, height);
+        outputBytes_ = viewOf(colour, GL_RGBA8, width, height);
         frame_ = gl::Framebuffer::colourAndDepth(outputView_, depth, "the output seen as sRGB");
+        bytesFrame_ = gl::Framebuffer::colourAndDepth(outputBytes_, depth, "the output's bytes");
         return frame_.id();
     }
     outputView_ = {};
+    outputBytes_ = {};
     if (own_.width() != width || own_.height() != height) {
         own_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
         ownBytes_ = viewOf(own_.id(), GL_RGBA8, width, height);
         ownRead_ = gl::Framebuffer::colourOnly(ownBytes_, -1, "sRGB frame's bytes");
     }
     frame_ = gl::Framebuffer::colourAndDepth(own_, depth, "sRGB frame");  // the renderer may have made `depth` again
+    bytesFrame_ = gl::Framebuffer::colourAndDepth(ownBytes_, depth, "sRGB frame's bytes");
     return frame_.id();
 }
 
