@@ -2,8 +2,9 @@
 // The frame shaded straight into 8-bit sRGB (RenderOptions::floatTarget false): the opaque pass
 // writes the bytes, its shader encoding sRGB itself (bytesFramebuffer); the passes that blend
 // write linear colour, which GL encodes on the way in and blends in linear (GL_FRAMEBUFFER_SRGB);
-// the lighting shader applies the fog (FOG_IN_SHADING), and no resolve pass reads the frame again. Measured on llvmpipe (default scene, 1280x720, bench): the resolve
-// pass was 15-16 ms of `none`'s 60-62 ms frame.
+// the lighting shader applies the fog (FOG_IN_SHADING), and no resolve pass reads the frame again.
+// Measured on llvmpipe (default scene, 1280x720, bench): the resolve pass was 15-16 ms of `none`'s
+// 60-62 ms frame.
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
 
