@@ -65,7 +65,8 @@ runOsg() {
     shot=(); [ "$r" -eq 1 ] && shot=(--screenshot "$out/osg_$osg.png")
     line="$(xvfb-run -a -s "-screen 0 ${size}x24" "$peer" "$out/round_1/scenes/grid_$triangles.obj" --technique "$osg" \
             --mapres "$mapres" --size "$size" --eye "$eye" --target "$target" --fov "$fov" --sun "$sun" \
-            --frames "$frames" --warmup 5 "${shot[@]}" 2>/dev/null | grep '^osgshadow')"
+            --frames "$frames" --warmup 5 "${shot[@]}" 2>/dev/null | grep '^osgshadow')" \
+      || { echo "run.sh: osgshadow_peer printed no timing for $osg (round $r)" >&2; exit 1; }
     echo "$r $osg $(echo "$line" | awk '{print $4}')" >> "$out/osg_ms.txt"
   done
 }
