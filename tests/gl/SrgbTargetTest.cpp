@@ -8,6 +8,7 @@
 #include "gl/Texture.h"
 #include "gpu/ShaderContract.h"
 #include "render/Offscreen.h"
+#include "util/Srgb.h"
 
 #include <array>
 #include <cmath>
@@ -113,27 +114,25 @@ INSTANTIATE_TEST_SUITE_P(Techniques, SrgbTarget, ::testing::Values("hard", "cssm
 TEST(SrgbTargetUse, OpaqueSurfacesCarryTheTransferFunctionsBytes) {
     const std::array<glm::vec3, 4> albedo = {glm::vec3(0.0008f, 0.0025f, 0.01f), glm::vec3(0.03f, 0.1f, 0.214f),
                                              glm::vec3(0.35f, 0.5f, 0.65f), glm::vec3(0.8f, 0.9f, 1.0f)};
+    const auto paneX = [](std::size_t i) { return -3.0 + 2.0 * double(i); };  // each pane's centre, at y = z = 0
     std::string objects;
     for (std::size_t i = 0; i < albedo.size(); ++i) {
         const glm::vec3 a = albedo[i];
         objects += std::string(i ? "," : "") + R"({ "shape": "plane", "size": [1.8, 3], "rotation_deg": [90, 0, 0], "position": [)" +
-                   std::to_string(-3.0 + 2.0 * double(i)) + R"(, 0, 0], "material": { "diffuse": [)" + std::to_string(a.r) + "," +
+                   std::to_string(paneX(i)) + R"(, 0, 0], "material": { "diffuse": [)" + std::to_string(a.r) + "," +
                    std::to_string(a.g) + "," + std::to_string(a.b) + R"(], "specular": [0, 0, 0] } })";
     }
     scene::Scene s = sceneFromJson(R"({ "camera": { "position": [0, 0, 10], "target": [0, 0, 0], "fov_deg": 40 },
       "background": [0, 0, 0], "ambient": [1, 1, 1],
       "lights": [ { "type": "directional", "direction": [1, 0, 0], "intensity": 1 } ],
       "objects": [ )" + objects + " ] }");
-    const auto srgbByte = [](float linear) {
-        const double encoded = linear < 0.0031308 ? 12.92 * linear : 1.055 * std::pow(double(linear), 1.0 / 2.4) - 0.055;
-        return static_cast<int>(std::lround(255.0 * encoded));
-    };
+    const auto srgbByte = [](float linear) { return static_cast<int>(std::lround(255.0f * util::linearToSrgb(linear))); };
     const int w = 160, h = 96;
     for (const bool floatTarget : {false, true}) {
         const auto rgba = renderRgba8(s, options("none", floatTarget), w, h);
         const double halfWidth = 10.0 * std::tan(glm::radians(20.0)) * w / h;  // of the view at z = 0
         for (std::size_t i = 0; i < albedo.size(); ++i) {
-            const int x = static_cast<int>(w / 2 + (-3.0 + 2.0 * double(i)) / halfWidth * (w / 2)), y = h / 2;
+            const int x = static_cast<int>(w / 2 + paneX(i) / halfWidth * (w / 2)), y = h / 2;
             const std::size_t at = (static_cast<std::size_t>(y) * w + x) * 4;
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(int(rgba[at + c]), srgbByte(albedo[i][c]), 1)
