@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The NVIDIA measurements of the README's "Measured on an NVIDIA H100", in one run (~7 min on an
-# H100). On the GPU machine, from the project root, after building here, `scripts/fetch-assets.sh`
-# and `../shared/tools/gpu-bundle.sh`:
+# H100, plus ~1 min for the goal ratios in rounds that come first since stop 67). On the GPU
+# machine, from the project root, after building here, `scripts/fetch-assets.sh` and
+# `../shared/tools/gpu-bundle.sh`:
 #     source .gpu/env.sh; scripts/gpu-measure.sh [OUT_DIR]
 # Writes gltests.log (the GL suite against the driver: its warnings fail tests) and bench.log (every
 # table) to OUT_DIR (default: $OUT where the device tool sets it, else ./gpu-out). Each step has a
@@ -42,6 +43,13 @@ short=(--no-images --seconds 1 --warmup-seconds 1)
 hd=(--size 1920x1080 --shadow-res 2048)
 # The GPU idles at 345 MHz: a warm-up run first, never timed.
 step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmup-seconds 5 --no-images --out "$work/warm"
+# The open goals' ratios first, in rounds (each case's frame ÷ its scene's first case's in the same
+# round, the median with its interval), at the llvmpipe tables' 1280x720: issue 15's hard ÷ none,
+# cssm2 and cssm1 ÷ hard on the default scene, issue 11's cssm2 ÷ hard on the glass scene (the H200
+# read 1.53 there by GPU ms, from one measurement of each).
+rounds=(--rounds 8 --seconds 0.5 --warmup-seconds 0.5 --interleave 9 --no-images)
+step "goal ratios, default scene" 90 penumbra bench --techniques none,hard,cssm2,cssm1,pcf-poisson16,pcss "${rounds[@]}" --out "$work/goals-default"
+step "goal ratios, glass scene" 60 penumbra bench scenes/glass.json --techniques hard,cssm2,cssm1 --fixed-camera "${rounds[@]}" --out "$work/goals-glass"
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
 # The view-dependent maps against hard from the scene's own camera, as the llvmpipe tables take them.
 step "default scene, fixed camera" 40 penumbra bench --techniques none,hard,cascaded,lispsm,psm "${hd[@]}" --fixed-camera "${short[@]}" --out "$work/fixed"
