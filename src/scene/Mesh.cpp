@@ -22,9 +22,9 @@ void Mesh::computeBounds() {
     for (const auto& v : vertices) bounds.add(v.position);
 }
 
-// Per vertex, an id shared by every vertex at the same position (a box's faces, a sphere's seam
-// and poles repeat positions): the vertices sorted by their position's bits, -0 taken as +0.
-static std::vector<std::uint32_t> weldedIds(const std::vector<Vertex>& vertices) {
+// The vertices sorted by their position's bits, -0 taken as +0 (a box's faces, a sphere's seam
+// and poles repeat positions).
+std::vector<std::uint32_t> Mesh::weldedPositionIds() const {
     using Key = std::array<std::uint32_t, 3>;
     const auto key = [&](std::uint32_t i) {
         const glm::vec3 w = vertices[i].position + glm::vec3(0.0f);  // -0 + 0 = +0: equal positions, equal bits
@@ -74,7 +74,7 @@ static bool bindsSolid(const Mesh& mesh, const MeshPart& p, const std::vector<st
 }
 
 std::vector<bool> Mesh::closedParts() const {
-    const std::vector<std::uint32_t> welded = weldedIds(vertices);
+    const std::vector<std::uint32_t> welded = weldedPositionIds();
     std::vector<bool> closed(parts.size());
     for (std::size_t p = 0; p < parts.size(); ++p) closed[p] = bindsSolid(*this, parts[p], welded);
     return closed;

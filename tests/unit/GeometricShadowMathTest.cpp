@@ -1,6 +1,7 @@
 // Shadow volumes and planar shadows, the geometry: adjacency and closedness of the built-in
 // shapes, Blinn's flattening matrix, and the choice of the receiver plane.
 #include "scene/Shapes.h"
+#include "scene/io/SceneFile.h"
 #include "shadows/planar/PlanarFit.h"
 #include "shadows/volumes/Adjacency.h"
 #include "shadows/volumes/NearClipVolume.h"
@@ -25,6 +26,30 @@ TEST(Adjacency, BoxAndSphereAreClosedAPlaneHasFourBorderEdges) {
     const AdjacencyMesh plane = buildAdjacency(scene::shapes::plane(2.0f, 2.0f));
     EXPECT_EQ(plane.edges.boundary, 4u);
     EXPECT_FALSE(plane.closed());
+}
+
+// The volumes pair triangles over the weld by which the renderer judges a part closed
+// (Mesh::weldedPositionIds), so a part the renderer draws as a solid casts from its lit side only.
+// Until stop 67 the volumes welded on a grid of a millionth of the mesh: it merged distinct
+// vertices of the park's trash can (part 2 of its OBJ), leaving 31 edges shared by three triangles
+// in a part the renderer culls as a solid, which then cast from both sides of every triangle.
+TEST(Adjacency, APartTheRendererFindsClosedIsClosedForTheVolumes) {
+    const scene::Scene park = scene::io::loadScene(PENUMBRA_SCENE_DIR "/park.json");
+    int checked = 0, trashCanClosed = 0;
+    for (const scene::Mesh& mesh : park.meshes) {
+        const std::vector<bool> closed = mesh.closedParts();
+        const AdjacencyMesh adjacency = buildAdjacency(mesh, std::vector<bool>(mesh.parts.size(), true));
+        for (std::size_t p = 0; p < mesh.parts.size(); ++p) {
+            if (!closed[p]) continue;
+            ++checked;
+            const EdgeCounts& edges = adjacency.parts[p];
+            EXPECT_TRUE(edges.closed()) << mesh.name << " part " << p << ": " << edges.boundary << " border, " << edges.nonManifold
+                                        << " non-manifold, " << edges.misoriented << " misoriented edges";
+            trashCanClosed += mesh.name.find("trashcan") != std::string::npos;
+        }
+    }
+    EXPECT_GE(checked, 3);
+    EXPECT_GE(trashCanClosed, 1) << "the trash can's closed part";
 }
 
 TEST(Adjacency, NeighboursShareTheEdgeTheOtherWay) {

@@ -1,34 +1,9 @@
 #include "shadows/volumes/Adjacency.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <unordered_map>
 
 namespace penumbra::shadows {
-
-namespace {
-
-struct PositionKey {
-    std::array<std::int64_t, 3> cell;
-    bool operator==(const PositionKey& o) const { return cell == o.cell; }
-};
-struct PositionHash {
-    std::size_t operator()(const PositionKey& k) const {
-        return (static_cast<std::size_t>(k.cell[0]) * 73856093u) ^ (static_cast<std::size_t>(k.cell[1]) * 19349663u) ^
-               (static_cast<std::size_t>(k.cell[2]) * 83492791u);
-    }
-};
-
-// Positions closer than `weld` (a millionth of the mesh) are one: generated seams (sin 2π ≠ 0)
-// and exporters' rounding must not open a closed mesh.
-PositionKey keyOf(const glm::vec3& p, float weld) {
-    PositionKey k{};
-    for (int i = 0; i < 3; ++i) k.cell[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(std::llround(p[i] / weld));
-    return k;
-}
-
-}  // namespace
 
 EdgeCounts& EdgeCounts::operator+=(const EdgeCounts& o) {
     boundary += o.boundary;
@@ -39,15 +14,11 @@ EdgeCounts& EdgeCounts::operator+=(const EdgeCounts& o) {
 
 AdjacencyMesh buildAdjacency(const scene::Mesh& mesh, const std::vector<bool>& alone) {
     AdjacencyMesh out;
-    std::unordered_map<PositionKey, std::uint32_t, PositionHash> welded;
-    std::vector<std::uint32_t> remap(mesh.vertices.size());
-    scene::Bounds bounds;
-    for (const auto& v : mesh.vertices) bounds.add(v.position);
-    const float weld = std::max(1e-6f * glm::length(bounds.extent()), 1e-12f);
+    // The weld Mesh::closedParts judges by: a part closed for the renderer is closed here.
+    const std::vector<std::uint32_t> remap = mesh.weldedPositionIds();
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const auto [it, inserted] = welded.try_emplace(keyOf(mesh.vertices[v].position, weld), static_cast<std::uint32_t>(out.positions.size()));
-        if (inserted) out.positions.push_back(mesh.vertices[v].position);
-        remap[v] = it->second;
+        if (remap[v] >= out.positions.size()) out.positions.resize(remap[v] + 1);
+        out.positions[remap[v]] = mesh.vertices[v].position;
     }
     const std::size_t triangles = mesh.indices.size() / 3;
     auto corner = [&](std::size_t t, int k) { return remap[mesh.indices[3 * t + static_cast<std::size_t>(k)]]; };
