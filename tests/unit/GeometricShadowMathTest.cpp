@@ -29,10 +29,12 @@ TEST(Adjacency, BoxAndSphereAreClosedAPlaneHasFourBorderEdges) {
 }
 
 // The volumes pair triangles over the weld by which the renderer judges a part closed
-// (Mesh::weldedPositionIds), so a part the renderer draws as a solid casts from its lit side only.
+// (Mesh::weldedPositionIds), so the two agree: judged alone (as the volumes judge a translucent
+// part, buildAdjacency's `alone`), a part the renderer draws as a solid is closed for them too.
 // Until stop 67 the volumes welded on a grid of a millionth of the mesh: it merged distinct
 // vertices of the park's trash can (part 2 of its OBJ), leaving 31 edges shared by three triangles
-// in a part the renderer culls as a solid, which then cast from both sides of every triangle.
+// in a part the renderer culls as a solid. (Drawn opaque, the trash can's parts are paired
+// together and its other parts are open, so it casts from both sides either way.)
 TEST(Adjacency, APartTheRendererFindsClosedIsClosedForTheVolumes) {
     const scene::Scene park = scene::io::loadScene(PENUMBRA_SCENE_DIR "/park.json");
     int checked = 0, trashCanClosed = 0;
