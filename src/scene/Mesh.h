@@ -60,7 +60,7 @@ struct Mesh {
     // a mesh's vertices, for closedParts and for the shadow volumes' adjacency alike. No tolerance:
     // GL draws a crack between positions one ulp apart, and a tolerance also welds distinct
     // vertices (on scenes/park.json a grid of a millionth of the mesh gave the trash can 31 edges
-    // shared by three triangles, where the exact weld finds it closed).
+    // shared by three triangles in a part the exact weld finds closed).
     std::vector<std::uint32_t> weldedPositionIds() const;
     // Whether a part's every vertex lies on or behind the plane of each of its triangles (their
     // counter-clockwise side is the front), to 1e-4 of the part's size: a flat part, or the
