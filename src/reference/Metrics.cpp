@@ -63,9 +63,7 @@ std::vector<std::uint8_t> heatMap(const std::vector<float>& e, const std::vector
 }
 
 std::vector<std::uint8_t> encodeSrgb(const std::vector<glm::vec3>& lin, int w, int h) {
-    return encode(w, h, [&](std::size_t i) {
-        return glm::vec3(util::linearToSrgb(lin[i].r), util::linearToSrgb(lin[i].g), util::linearToSrgb(lin[i].b));
-    });
+    return encode(w, h, [&](std::size_t i) { return util::linearToSrgb(lin[i]); });
 }
 
 std::vector<std::uint8_t> encodeLinear(const std::vector<glm::vec3>& v, int w, int h) {

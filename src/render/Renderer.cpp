@@ -348,7 +348,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
     // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
     // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
     glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
-    if (srgbFrame_) clear = glm::vec4(util::linearToSrgb(clear.r), util::linearToSrgb(clear.g), util::linearToSrgb(clear.b), clear.a);
+    if (srgbFrame_) clear = glm::vec4(util::linearToSrgb(glm::vec3(clear)), clear.a);
     // NVIDIA validates the current program's samplers on a clear: another engine's program, still
     // current though deleted, must not be judged against this frame's texture units.
     glUseProgram(0);
