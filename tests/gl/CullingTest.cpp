@@ -60,6 +60,42 @@ TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
     EXPECT_EQ(renderer.shadowTriangles()[1], box) << "the spot looks at the +x box only";
 }
 
+// The moment maps draw their casters straight into moments and read no depth map: with no
+// translucent caster in view (no tint pass to depth-test), each caster is drawn once per face it
+// reaches, as hard draws it, not once for a depth map and again for the moments. With a pane in
+// view, the opaque casters under the pane are drawn into the depth the pane's tint is tested
+// against, and only those: here the ground, which the pane lies over.
+TEST(Culling, MomentMapsDrawEachCasterOncePerFace) {
+    const std::string scene = R"({
+      "camera": { "position": [0, 10, 0.001], "target": [0, 0, 0], "up": [0, 0, -1] },
+      "lights": [ { "type": "point", "position": [0, 1, 0], "range": 30 },
+                  { "type": "spot", "position": [0, 1, 0], "direction": [1, 0, 0], "angle_deg": 40, "range": 30 } ],
+      "objects": [ { "shape": "box", "position": [4, 1, 0] }, { "shape": "box", "position": [-4, 1, 0] },
+                   { "shape": "box", "position": [0, 1, 4] }, { "shape": "box", "position": [0, 1, -4] } )";
+    const std::size_t box = 12;
+    for (const char* technique : {"vsm", "msm"}) {
+        scene::Scene s = sceneFromJson(scene + "] }");
+        render::RenderOptions options;
+        options.technique = technique;
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(64, 64);
+        renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
+        ASSERT_EQ(renderer.shadowTriangles().size(), 2u);
+        EXPECT_EQ(renderer.shadowTriangles()[0], 4 * box) << technique << ": each box once, in the cube face it faces";
+        EXPECT_EQ(renderer.shadowTriangles()[1], box) << technique << ": the spot looks at the +x box only";
+    }
+    // A pane (2 triangles) between the spot and the +x box: the box is drawn into moments and,
+    // under the pane, into the tint's depth test; the pane into the tint.
+    scene::Scene s = sceneFromJson(scene + R"(, { "shape": "plane", "size": [1, 1], "position": [2, 1, 0], "rotation_deg": [0, 0, 90],
+      "material": { "transmission": [0.1, 0.9, 0.1] } } ] })");
+    render::RenderOptions options;
+    options.technique = "vsm";
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(64, 64);
+    renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
+    EXPECT_EQ(renderer.shadowTriangles()[1], 2 * box + 2) << "the box into moments and under the pane, the pane into the tint";
+}
+
 // A green pane (t = 0.1, 0.9, 0.1) moving along `animation` over the ground, under a spot
 // straight down from (0, 5, 0) with cone `angleDeg`; the camera looks down from (0, 6, 0).
 scene::Scene paneUnderASpot(int fovDeg, int angleDeg, const std::string& animation) {

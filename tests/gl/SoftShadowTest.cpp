@@ -24,15 +24,17 @@ const char* kAreaLightScene = R"({
                { "shape": "box", "size": [0.2, 2.5, 0.2], "position": [0.5, 1.25, -1.5] } ] })";
 
 // Wrong-pixel share (visibility off by > 0.1, in %) against the 64-sample area-light reference,
-// measured on llvmpipe at 256x192 with 2048^2 maps and default parameters. Each bound is about
+// measured on llvmpipe at 256x192 with 2048^2 maps and default parameters (the moment maps since
+// their casters are drawn straight into moments, stop 68: vsm 1.131 -> 0.989, esm 1.598 -> 1.482,
+// evsm2 1.054 -> 0.910, evsm4 1.045 -> 0.928, msm 1.064 -> 1.044). Each bound is about
 // 1.25x its measurement: a real regression (a lost shadow, a broken filter) moves these by whole
 // percent (no shadows: 2.41%), rounding differences between drivers by hundredths.
 const std::map<std::string, double> kMeasuredWrongPercent = {
     {"hard", 1.084},          {"pcf-grid", 1.019},      {"pcf-bilinear", 1.072},  {"pcf-gaussian", 1.019},
     {"pcf-poisson16", 1.046}, {"pcf-poisson20", 1.052}, {"pcf-poisson32", 1.026}, {"pcf-random30", 1.024},
     {"pcf-jitter", 1.008},    {"pcf-dither", 1.052},    {"pcf-rotated", 1.045},   {"pcf-adaptive", 1.026},
-    {"pcss", 0.550},          {"distance", 1.059},      {"vsm", 1.131},           {"esm", 1.598},
-    {"evsm2", 1.054},         {"evsm4", 1.045},         {"msm", 1.064},           {"cssm1", 0.912},
+    {"pcss", 0.550},          {"distance", 1.059},      {"vsm", 0.989},           {"esm", 1.482},
+    {"evsm2", 0.910},         {"evsm4", 0.928},         {"msm", 1.044},           {"cssm1", 0.912},
     {"cssm2", 0.908},         {"cascaded", 1.084},      {"lispsm", 1.084},        {"lispsm-tiled", 1.084},
     {"psm", 1.084},           {"shadow-volumes", 1.088}, {"planar", 1.084},
 };
@@ -67,8 +69,8 @@ TEST(SoftShadows, EveryTechniqueAgainstTheAreaLightReference) {
     // The exponential warps in half floats: their exponents are held to what fp16 stores
     // (MomentShadowMap::exponents). Unheld, e^{c x} overflowed and the default scene came out 13-28 %
     // wrong (`compare`, 320 x 180). Measured here: esm 2.309 % (c = 10 against 80 leaks light near
-    // contact), evsm2 0.945 %, evsm4 0.961 %.
-    for (const auto& [warp, measured] : {std::pair("esm", 2.309), std::pair("evsm2", 0.945), std::pair("evsm4", 0.961)}) {
+    // contact), evsm2 0.926 %, evsm4 0.945 %.
+    for (const auto& [warp, measured] : {std::pair("esm", 2.308), std::pair("evsm2", 0.926), std::pair("evsm4", 0.945)}) {
         const auto fp16 = cmp.evaluate(warp, 2048, 0, {{"fp16", "true"}});
         std::printf("%-14s fp16: wrong %.3f%%  rmse %.4f\n", warp, 100 * fp16.wrongShare, fp16.rmse);
         EXPECT_LT(100 * fp16.wrongShare, measured * 1.25) << warp << " with fp16";

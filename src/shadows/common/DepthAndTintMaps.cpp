@@ -232,12 +232,12 @@ glm::vec2 DepthAndTintMaps::translucentTestOffset(const Light& light) {
     return light.shadow.polygonOffset + glm::vec2(0.0f, kMoreUnits);
 }
 
-void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere, const TranslucentPass& translucentPass) {
+void DepthAndTintMaps::render(const ShadowFrame& frame, int elsewhere, const TranslucentPass& translucentPass) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;
     slots_ = *frame.slots;
     const bool reuse = frame.reuseStillCasters && frame.casterDigest;
-    depthElsewhere_ = depthElsewhere;
+    depthElsewhere_ = elsewhere;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (!slots_.shadowed(i)) continue;
         const Light& light = lights[i];
@@ -271,7 +271,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere, cons
             // A light whose depth lives elsewhere needs this depth only as the tint pass's depth
             // test, under the translucent casters: the opaque casters are culled to those texels
             // and drawn scissored to them (the rest of the map is stale and never read).
-            const bool cropped = light == depthElsewhere && anyTranslucent;
+            const bool cropped = depthElsewhere(light) && anyTranslucent;
             const OpaqueRegion region{cropped ? cropTo(tinted, ls.resolution) * vp : vp,
                                       cropped ? tinted : TexelRect(0, 0, ls.resolution, ls.resolution), cropped};
             const CasterSelection movingOpaque{Casters::Opaque, region.cull, light, Motion::Moving};
@@ -303,7 +303,7 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int depthElsewhere, cons
             // The tint texels to draw again (nothing without a tint map): what changed, or where the
             // last translucent casters may have left something and where this frame's are.
             const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tinted);
-            const bool opaqueDrawn = light != depthElsewhere || (anyTranslucent && !isEmpty(redraw));
+            const bool opaqueDrawn = !depthElsewhere(light) || (anyTranslucent && !isEmpty(redraw));
             if (opaqueDrawn) {
                 const gl::ScopedPassState state(opaquePass);
                 renderOpaque(frame, m, face, light, region, stillKey, moving, translucentOverStill);
@@ -384,7 +384,7 @@ std::vector<DebugView> DepthAndTintMaps::debugViews() const {
         if (maps_[i].depth.id() == 0 || maps_[i].cube) continue;
         // A light whose depth lives in the technique's own map: this one is drawn only under
         // translucent casters, as the tint's depth test, and may be stale elsewhere.
-        if (static_cast<int>(i) != depthElsewhere_)
+        if (!depthElsewhere(static_cast<int>(i)))
             views.push_back({"light " + std::to_string(i) + " depth", maps_[i].depth.id(), GL_TEXTURE_2D, true, 0});
         views.push_back({"light " + std::to_string(i) + " colour", maps_[i].tint.id(), GL_TEXTURE_2D, false, 0});
     }

@@ -114,8 +114,8 @@ public:
     // Turns the tint maps on or off; the maps are made again on the next render.
     void setWithTint(bool withTint);
     bool withTint() const { return withTint_; }
-    // `depthElsewhere` (a light index, -1: none): a light whose opaque depth the technique keeps
-    // in a map of its own (cascades, warped maps). Its plain depth map is drawn only when
+    // `depthElsewhere` (a light index, -1: none, kEveryLight: all): a light whose opaque depth the
+    // technique keeps in a map of its own (cascades, warped maps, moments). Its plain depth map is drawn only when
     // translucent casters need it as the depth test of the tint pass, and then only under them
     // (culled and scissored to their texels); otherwise the light costs no pass here (measured on
     // the 975k-triangle grid: 965k triangles per frame saved).
@@ -125,6 +125,7 @@ public:
     // caster may lie in front of them (translucentBehindMoving in the .cpp; translucentRedo counts
     // their texels only then); without it, only the plain tint (NearestLayer) is drawn that way.
     using TranslucentPass = std::function<void(std::size_t light, std::size_t face)>;
+    static constexpr int kEveryLight = -2;
     void render(const ShadowFrame& frame, int depthElsewhere = -1, const TranslucentPass& translucentPass = {});
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
@@ -175,6 +176,7 @@ private:
     bool withTint_ = true;
     TintAlpha tintAlpha_;
     int depthElsewhere_ = -1;  // of the last render
+    bool depthElsewhere(int light) const { return depthElsewhere_ == kEveryLight || light == depthElsewhere_; }
 };
 
 }  // namespace penumbra::shadows

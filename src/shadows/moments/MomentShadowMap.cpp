@@ -19,11 +19,11 @@ MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
     buildPrograms();
 }
 
-// The warp, the blur radius and the downsampling are compiled in (moments.frag, blur.frag):
-// rebuilt when a parameter changes them.
+// The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
+// moments.frag, blur.frag, blur_bilinear.frag): rebuilt when a parameter changes them.
 void MomentShadowMap::buildPrograms() {
-    // blur_radius is in depth-map texels (sigma = radius / 2 of them): at half resolution the
-    // kernel spans half as many moment texels.
+    // blur_radius is in texels of the light's map resolution (sigma = radius / 2 of them): at half
+    // resolution the kernel spans half as many moment texels.
     const float scale = halfResolution_ ? 2.0f : 1.0f;
     const int taps = static_cast<int>(std::ceil(static_cast<float>(blurRadius_) / scale));
     const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / scale, 0.5f);
@@ -33,9 +33,16 @@ void MomentShadowMap::buildPrograms() {
     defines.push_back(std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0"));
     toMoments_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
-    blur_ = gl::Program::build(
-        {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/blur.frag", .defines = defines});
+    // Radius 1 in one pass of four bilinear fetches, more in two separable passes (see update).
+    const char* blur = taps == 1 ? "src/shadows/moments/blur_bilinear.frag" : "src/shadows/moments/blur.frag";
+    blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = defines});
     downsample_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/downsample.frag"});
+    const gl::ProgramDesc caster{.vertex = "src/shadows/common/glsl/caster.vert",
+                                 .fragment = "src/shadows/moments/caster_moments.frag",
+                                 .defines = lookupDefines()};
+    gl::ProgramDesc alphaTested = caster;
+    alphaTested.defines.emplace_back("ALPHA_TEST 1");
+    casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
     built_ = {blurRadius_, halfResolution_};
 }
@@ -50,10 +57,12 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
         Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit; exponential warps then at most c = 10 (esm) or 5.54 (evsm), what half floats hold"),
         Parameter::flag("mipmaps", mipmaps_, "trilinear mipmaps of the moments"),
         Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
-        Parameter::flag("msaa", msaa_, "moments averaged over a 4x multisampled depth map"),
+        Parameter::flag("msaa", msaa_,
+                        "moments averaged over a 4x multisampled depth map at the light's resolution (smoother "
+                        "silhouettes at several times the cost; without it the casters' moments are drawn directly)"),
         Parameter::flag("half_resolution", halfResolution_,
-                        "moments at half the depth map's resolution, each the mean of 2 x 2 depth texels' moments "
-                        "(the same error against the reference on the default scene at 0.4x the cost)")};
+                        "moments at half the light's map resolution (the same error against the reference on the "
+                        "default scene at a quarter of the texels to draw, blur and mipmap)")};
     if (warp_ == Warp::Variance || warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) {
         p.push_back(Parameter::real("min_variance", minVariance_, 0.0f, 1e-2f, "variance floor against acne"));
         p.push_back(Parameter::real("bleed_reduction", bleedReduction_, 0.0f, 0.95f,
@@ -118,6 +127,10 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.rawTarget = gl::Framebuffer::colourOnly(m.raw, -1, "unblurred moments");
     m.scratch = gl::Texture::create2D(m.format, res, res);
     m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
+    m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
+    m.raw.setWrap(GL_CLAMP_TO_EDGE);
+    m.rasterDepth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
+    m.rawRaster = gl::Framebuffer::colourAndDepth(m.raw, m.rasterDepth, "unblurred moments' raster");
     if (msaa) {  // llvmpipe offers at most 4 samples
         m.multisampledDepth = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, depth.resolution, depth.resolution, 4);
         m.multisampledTarget.attach(GL_DEPTH_ATTACHMENT, m.multisampledDepth);
@@ -128,71 +141,138 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.levelTargets.resize(static_cast<std::size_t>(faces));
     m.levelViews.resize(static_cast<std::size_t>(faces));
     for (int f = 0; f < faces; ++f) {
-        m.depthFaces.push_back(gl::Texture::view2D(depth.depth, GL_DEPTH_COMPONENT32F, f));
         for (int level = 0; level < levels; ++level) {
             const auto face = static_cast<std::size_t>(f);
             m.levelTargets[face].push_back(gl::Framebuffer::colourOnly(m.moments, m.cube ? f : -1, "moment map", level));
             m.levelViews[face].push_back(gl::Texture::view2D(m.moments, m.format, f, level));
+            m.levelViews[face].back().setFilter(GL_LINEAR, GL_LINEAR);  // downsample.frag's fetch
+            m.levelViews[face].back().setWrap(GL_CLAMP_TO_EDGE);
         }
+        gl::Framebuffer raster;
+        if (m.cube) raster.attachLayer(GL_COLOR_ATTACHMENT0, m.moments, f, 0);
+        else raster.attach(GL_COLOR_ATTACHMENT0, m.moments);
+        raster.attach(GL_DEPTH_ATTACHMENT, m.rasterDepth);
+        raster.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        raster.checkComplete("moment map's raster");
+        m.levelRaster.push_back(std::move(raster));
     }
     m.derived.assign(static_cast<std::size_t>(faces), DerivedTexels{});
 }
 
 TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
-    const DepthAndTintMaps::LightMaps& depth = maps_.maps(i);
     const LightSpace& space = (*frame.lightSpaces)[i];
-    // MSAA draws its own depth every frame; the rest is what the moments are a function of.
-    const std::uint64_t still = depth.stillKeys[face];
-    const std::uint64_t key = still == 0 || m.multisampledDepth.id() != 0
-                                  ? 0
-                                  : util::Digest()
-                                        .add(still, exponents(), space.near, space.far,
-                                             space.perspective, blurRadius_)
-                                        .value();
-    return m.derived[face].changed(key, depth.movingTexels[face], m.depthResolution);
+    const glm::mat4& vp = space.viewProj[face];
+    const int light = static_cast<int>(i);
+    // MSAA draws its own depth every frame; the rest is what the moments are a function of: the
+    // still casters, the light's transform and depth range, the offset, the warp and the blur.
+    const bool reuse = frame.reuseStillCasters && frame.casterDigest && m.multisampledDepth.id() == 0;
+    const std::uint64_t key = !reuse ? 0
+                                     : util::Digest()
+                                           .add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp,
+                                                (*frame.lights)[i].shadow.polygonOffset, exponents(), space.near, space.far,
+                                                space.perspective, blurRadius_)
+                                           .value();
+    const TexelRect moving = texelRect(frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}), vp, m.resolution);
+    return m.derived[face].changed(key, moving, m.resolution);
 }
 
-void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& depthTexels, const ShadowFrame& frame) {
+glm::vec4 MomentShadowMap::farMoments() const {
+    const glm::vec2 c = exponents();
+    switch (warp_) {
+        case Warp::Variance: return {1.0f, 1.0f, 0.0f, 0.0f};
+        case Warp::Exponential: return {std::exp(c.x), 0.0f, 0.0f, 0.0f};
+        case Warp::ExponentialVariance2:
+        case Warp::ExponentialVariance4: {
+            const float p = std::exp(c.x), n = -std::exp(-c.y);
+            return {p, p * p, n, n * n};
+        }
+        case Warp::Moments4: return glm::vec4(1.0f);
+    }
+    return glm::vec4(1.0f);
+}
+
+void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
+                                    const ShadowFrame& frame) {
+    const LightMoments& m = moments_[i];
+    const LightSpace& space = (*frame.lightSpaces)[i];
+    const glm::vec2 po = (*frame.lights)[i].shadow.polygonOffset;
+    // The slope-scaled offset is per texel of slope: a map n times coarser takes 1/n of the
+    // factor for the same offset in depth as the light's depth map.
+    const float coarser = static_cast<float>(m.depthResolution) / static_cast<float>(m.resolution);
+    const gl::ScopedPassState state(gl::PassState::depthOnly().withPolygonOffset(po.x / coarser, po.y));
+    target.bind();
+    glViewport(0, 0, m.resolution, m.resolution);
+    glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
+    const glm::vec4 none = farMoments();
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
+    glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);
+    casterMoments_->set("uPerspective", space.perspective ? 1 : 0);
+    casterMoments_->set("uNear", space.near);
+    casterMoments_->set("uFar", space.far);
+    casterMoments_->set("uExponents", exponents());
+    // Culled to the rectangle: a kept map redoes only the texels the animated casters changed.
+    frame.drawCasters(*casterMoments_, {Casters::Opaque, cropTo(texels, m.resolution) * space.viewProj[face], static_cast<int>(i),
+                                        Motion::Any, space.viewProj[face], true});
+}
+
+void MomentShadowMap::convertMultisampled(std::size_t i, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
+                                          const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
     const LightSpace& space = (*frame.lightSpaces)[i];
     const scene::Light& light = (*frame.lights)[i];
-    const bool msaa = m.multisampledDepth.id() != 0;
-    if (msaa) {  // the opaque casters again, into the 4x multisampled depth map of this face
+    {  // the opaque casters again, into the 4x multisampled depth map of this face
         const gl::ScopedPassState state(
             gl::PassState::depthOnly().withPolygonOffset(light.shadow.polygonOffset.x, light.shadow.polygonOffset.y));
+        glDisable(GL_SCISSOR_TEST);
         glViewport(0, 0, m.depthResolution, m.depthResolution);
         m.multisampledTarget.bind();
         const float farDepth = 1.0f;
         glClearNamedFramebufferfv(m.multisampledTarget.id(), GL_DEPTH, 0, &farDepth);
         frame.drawCasters(maps_.depthProgram(), {Casters::Opaque, space.viewProj[face], static_cast<int>(i), Motion::Any, space.viewProj[face], true});
-        fullscreenVao_.bind();
-        m.multisampledDepth.bind(1);
     }
-    // Moment texels whose unblurred moments changed; the blur spreads that by its taps in x, then
-    // y: the y pass reads the x-blurred texels as far again above and below, the x pass the
-    // unblurred ones as far again left and right.
-    const TexelRect changed = coarser(depthTexels, m.depthResolution / m.resolution, m.resolution);
-    const TexelRect blurred = grown(changed, glm::ivec2(blurTaps_), m.resolution);
-    const TexelRect xBlurred = grown(blurred, glm::ivec2(0, blurTaps_), m.resolution);
-    const TexelRect unblurred = grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
-    const auto scissor = [](const TexelRect& r) { glScissor(r.x, r.y, r.z - r.x, r.w - r.y); };
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     glEnable(GL_SCISSOR_TEST);
     glViewport(0, 0, m.resolution, m.resolution);
+    fullscreenVao_.bind();
     toMoments_.set("uPerspective", space.perspective ? 1 : 0);
     toMoments_.set("uNear", space.near);
     toMoments_.set("uFar", space.far);
     toMoments_.set("uExponents", exponents());
-    toMoments_.set("uSamples", msaa ? 4 : 0);
     toMoments_.use();
-    depthSampler_.bind(0);
-    m.depthFaces[face].bind(0);
-    (blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0]).bind();
-    scissor(blurTaps_ > 0 ? unblurred : blurred);
+    m.multisampledDepth.bind(1);
+    target.bind();
+    glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    gl::Sampler::unbind(0);
-    if (blurTaps_ > 0) {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
+}
+
+void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& changed, const ShadowFrame& frame) {
+    LightMoments& m = moments_[i];
+    // `changed`: moment texels whose unblurred moments changed. The blur spreads that by its taps:
+    // in one pass (radius 1, blur_bilinear.frag) by as much in x and y; in two, the y pass reads
+    // the x-blurred texels as far again above and below, the x pass the unblurred ones as far
+    // again left and right.
+    const bool bilinear = blurTaps_ == 1;
+    const TexelRect blurred = grown(changed, glm::ivec2(blurTaps_), m.resolution);
+    const TexelRect xBlurred = grown(blurred, glm::ivec2(0, blurTaps_), m.resolution);
+    const TexelRect unblurred = bilinear ? grown(blurred, glm::ivec2(1), m.resolution) : grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
+    glEnable(GL_SCISSOR_TEST);
+    if (m.multisampledDepth.id() != 0)
+        convertMultisampled(i, face, blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0], blurTaps_ > 0 ? unblurred : blurred, frame);
+    else
+        rasterMoments(i, face, blurTaps_ > 0 ? m.rawRaster : m.levelRaster[face], blurTaps_ > 0 ? unblurred : blurred, frame);
+    const auto scissor = [](const TexelRect& r) { glScissor(r.x, r.y, r.z - r.x, r.w - r.y); };
+    const gl::ScopedPassState state(gl::PassState::fullscreen());
+    glViewport(0, 0, m.resolution, m.resolution);
+    fullscreenVao_.bind();
+    if (bilinear) {  // raw -> map, x and y at once
+        blur_.use();
+        m.levelTargets[face][0].bind();
+        m.raw.bind(0);
+        scissor(blurred);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    } else if (blurTaps_ > 0) {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
         blur_.use();
         m.scratchTarget.bind();
         blur_.set("uDirection", glm::ivec2(1, 0));
@@ -221,9 +301,8 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& d
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
     if (built_ != std::pair{blurRadius_, halfResolution_}) buildPrograms();
-    maps_.render(frame);
+    maps_.render(frame, DepthAndTintMaps::kEveryLight);  // the moments do not read the depth: the tint's test alone
     gl::DebugGroup group("moments");
-    fullscreenVao_.bind();
     for (std::size_t i = 0; i < maps_.slots().size(); ++i) {
         if (!maps_.slots().shadowed(i)) continue;
         ensure(i, maps_.maps(i));

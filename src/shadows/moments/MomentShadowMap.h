@@ -1,6 +1,5 @@
 #pragma once
 #include "gl/Framebuffer.h"
-#include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "shadows/ShadowTechnique.h"
@@ -8,14 +7,18 @@
 #include "shadows/common/MapRegion.h"
 #include "shadows/moments/MomentWarp.h"
 
+#include <optional>
+
 namespace penumbra::shadows {
 
-// VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. Moments are made
-// from the (opaque-caster) depth map, blurred with a separable Gaussian and optionally
-// mip-mapped for trilinear/anisotropic filtering. Coloured tint from translucent casters comes
-// from the shared tint map. Where the depth map was kept
-// (DepthAndTintMaps), only the rectangle the animated casters cover now or covered last frame is
-// converted, blurred and mip-mapped again, widened by the blur's reach.
+// VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
+// moments are drawn straight into a map of their own resolution with its own depth buffer
+// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred with
+// a Gaussian and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
+// translucent casters comes from the shared tint map, whose opaque depth is drawn only under the
+// translucent casters, as its depth test (DepthAndTintMaps::kEveryLight): nothing here reads it.
+// While the still casters and the light stay put, only the rectangle the animated casters cover
+// now or covered last frame is drawn, blurred and mip-mapped again, widened by the blur's reach.
 class MomentShadowMap final : public ShadowTechnique {
 public:
     enum class Warp {
@@ -45,12 +48,16 @@ private:
         int levels = 1;
         gl::Texture moments;
         gl::Texture raw, scratch;  // 2D: the unblurred moments of one face, and those blurred along x
-        std::vector<gl::Texture> depthFaces;           // 2D views of each face (cube) or of the map
         // Per face, per mip level: a render target, and a view of the level alone (mip input).
         std::vector<std::vector<gl::Framebuffer>> levelTargets;
         std::vector<std::vector<gl::Texture>> levelViews;
         std::vector<DerivedTexels> derived;  // per face: what the moments were made from
         gl::Framebuffer rawTarget, scratchTarget;
+        // The casters' own raster (not with MSAA): a depth buffer at the moments' resolution, and
+        // the unblurred moments (blur) or each face's level 0 (no blur) with it attached.
+        gl::Texture rasterDepth;
+        gl::Framebuffer rawRaster;
+        std::vector<gl::Framebuffer> levelRaster;
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;
     };
@@ -58,12 +65,20 @@ private:
     // c+ and c- as the maps store them: the parameters, within what half floats hold with fp16.
     glm::vec2 exponents() const;
     void ensure(std::size_t light, const DepthAndTintMaps::LightMaps& depth);
-    // The depth texels of face `face` whose moments must be made again this frame (all of them
-    // when nothing was kept).
+    // The moment texels of face `face` that must be made again this frame (all of them when
+    // nothing was kept).
     TexelRect changedTexels(std::size_t light, std::size_t face, const ShadowFrame& frame);
-    // Makes the moments (and their mip levels) of `depthTexels` of face `face` again.
-    void update(std::size_t light, std::size_t face, const TexelRect& depthTexels, const ShadowFrame& frame);
+    // Makes the moments (and their mip levels) of `texels` of face `face` again.
+    void update(std::size_t light, std::size_t face, const TexelRect& texels, const ShadowFrame& frame);
     void buildPrograms();
+    // The moments where no caster is (depth 1), as moments.glsl's momentsOf(1) gives them.
+    glm::vec4 farMoments() const;
+    // Draws the opaque casters' moments into `target` (a raster framebuffer), inside `texels`.
+    void rasterMoments(std::size_t light, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
+                       const ShadowFrame& frame);
+    // Converts face `face`'s 4x multisampled depth into `target`'s moments, inside `texels`.
+    void convertMultisampled(std::size_t light, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
+                             const ShadowFrame& frame);
 
     std::string name_;
     Warp warp_;
@@ -75,9 +90,9 @@ private:
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
-    gl::Program toMoments_, blur_, downsample_;
+    gl::Program toMoments_, blur_, downsample_;  // toMoments_: MSAA's conversion
+    std::optional<CasterProgramPair> casterMoments_;
     int blurTaps_ = 0;  // taps each side, in moment texels (the programs' BLUR_RADIUS)
-    gl::Sampler depthSampler_{GL_NEAREST, GL_NEAREST};  // depth as values, not comparisons
     gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
 };
 
