@@ -5,13 +5,16 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace penumbra::app {
 
 struct BenchJob {
     std::vector<std::filesystem::path> scenes;  // empty: the built-in scene (unless a suite is given)
-    std::vector<std::string> techniques;        // empty: the scene's own; {"all"}: every registered one
+    // Empty: the scene's own; {"all"}: every registered one. Each may carry parameters of its own,
+    // "vsm:blur_kernel=box:mipmaps=false", so that variants of one technique are measured side by side.
+    std::vector<std::string> techniques;
     std::vector<int> shadowResolutions;         // empty: each light's own
     std::vector<std::string> suites;
     std::vector<std::size_t> gridScenes;  // generated grid scenes of about these many triangles
@@ -27,5 +30,8 @@ struct BenchJob {
 };
 
 int runBench(const BenchJob& job);
+
+// "name:p=v:q=w" -> ("name", {{"p", "v"}, {"q", "w"}}); throws std::invalid_argument on a part without '='.
+std::pair<std::string, shadows::ParameterValues> splitTechniqueParameters(const std::string& spec);
 
 }  // namespace penumbra::app

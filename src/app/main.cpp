@@ -144,17 +144,24 @@ int main(int argc, char** argv) {
         "--techniques",
         [&bench](const std::string& list) {
             std::stringstream in(list);
-            for (std::string name; std::getline(in, name, ',');) {
-                if (name.empty()) continue;
+            for (std::string spec; std::getline(in, spec, ',');) {
+                if (spec.empty()) continue;
+                std::string name;
+                try {
+                    name = app::splitTechniqueParameters(spec).first;
+                } catch (const std::invalid_argument& e) {
+                    throw CLI::ValidationError("--techniques", e.what());
+                }
                 if (name != "all" && !bench::isFloor(name) && !shadows::isKnownTechnique(name)) {
                     std::string known = "all, " + shadows::knownTechniqueNames();
                     for (const char* floor : bench::kFloors) known += std::string(", ") + floor;
                     throw CLI::ValidationError("--techniques", "unknown shadow technique '" + name + "'; known: " + known);
                 }
-                bench.techniques.push_back(name);
+                bench.techniques.push_back(spec);
             }
         },
-        "comma-separated techniques, or all (default: the scene's own)");
+        "comma-separated techniques, or all (default: the scene's own); each may name parameters of its own, "
+        "technique:name=value[:name=value...], e.g. vsm,vsm:blur_kernel=box");
     benchCmd->add_option_function<std::string>(
         "--shadow-res",
         [&bench](const std::string& list) {

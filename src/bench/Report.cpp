@@ -15,7 +15,9 @@ namespace fs = std::filesystem;
 
 std::string caseLabel(const CaseResult& r) {
     if (!r.spec.label.empty()) return r.spec.label;
-    return r.spec.shadowResolution > 0 ? r.technique + " " + std::to_string(r.spec.shadowResolution) : r.technique;
+    std::string label = r.technique;
+    for (const auto& [name, value] : r.spec.parameters) label += " " + name + "=" + value;
+    return r.spec.shadowResolution > 0 ? label + " " + std::to_string(r.spec.shadowResolution) : label;
 }
 
 // The median GPU time of a case's shadow pass.

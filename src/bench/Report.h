@@ -50,7 +50,7 @@ std::string writeBenchReport(const std::filesystem::path& dir, const std::vector
                              const BenchSettings& settings, const BenchContext& context,
                              const std::optional<nlohmann::json>& baseline, const std::optional<Quality>& quality);
 
-// The case's name in tables: its label, else technique (and resolution when set).
+// The case's name in tables: its label, else technique (its own parameters, and resolution when set).
 std::string caseLabel(const CaseResult& r);
 
 // Shadow-pass time against the triangles drawn into the maps, for each suite and case label that

@@ -153,7 +153,7 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapWithAnimatedGlass) {
 
 // cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept. A wide
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
-INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16",
+INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16", "vsm:blur_kernel=box",
                                                                   "cascaded", "cascaded:fit_receivers=false", "lispsm", "psm"));
 
 // Without an animated caster, the second frame of an unchanged view draws no triangle into any

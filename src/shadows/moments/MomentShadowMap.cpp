@@ -25,7 +25,8 @@ void MomentShadowMap::buildPrograms() {
     // blur_radius is in texels of the light's map resolution (sigma = radius / 2 of them): at half
     // resolution the kernel spans half as many moment texels.
     const float scale = halfResolution_ ? 2.0f : 1.0f;
-    const int taps = static_cast<int>(std::ceil(static_cast<float>(blurRadius_) / scale));
+    const bool box = blurKernel_ == kBlurBox && blurRadius_ > 0;
+    const int taps = box ? 1 : static_cast<int>(std::ceil(static_cast<float>(blurRadius_) / scale));
     const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / scale, 0.5f);
     std::vector<std::string> defines = lookupDefines();
     defines.push_back("BLUR_RADIUS " + std::to_string(taps));
@@ -33,8 +34,11 @@ void MomentShadowMap::buildPrograms() {
     defines.push_back(std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0"));
     toMoments_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
-    // Radius 1 in one pass of four bilinear fetches, more in two separable passes (see update).
-    const char* blur = taps == 1 ? "src/shadows/moments/blur_bilinear.frag" : "src/shadows/moments/blur.frag";
+    // The box in one bilinear fetch; the Gaussian of radius 1 in one pass of four, larger ones in two
+    // separable passes (see update).
+    const char* blur = box          ? "src/shadows/moments/blur_box.frag"
+                       : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
+                                   : "src/shadows/moments/blur.frag";
     blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = defines});
     downsample_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/downsample.frag"});
     const gl::ProgramDesc caster{.vertex = "src/shadows/common/glsl/caster.vert",
@@ -44,7 +48,8 @@ void MomentShadowMap::buildPrograms() {
     alphaTested.defines.emplace_back("ALPHA_TEST 1");
     casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
-    built_ = {blurRadius_, halfResolution_};
+    boxBlur_ = box;
+    built_ = {blurRadius_, halfResolution_, blurKernel_};
 }
 
 std::vector<std::string> MomentShadowMap::lookupDefines() const {
@@ -53,7 +58,12 @@ std::vector<std::string> MomentShadowMap::lookupDefines() const {
 
 std::vector<Parameter> MomentShadowMap::declareParameters() {
     std::vector<Parameter> p{
-        Parameter::integer("blur_radius", blurRadius_, 0, 16, "separable Gaussian pre-filter radius in depth-map texels (sigma = radius / 2)"),
+        Parameter::integer("blur_radius", blurRadius_, 0, 16,
+                           "Gaussian pre-filter radius in texels of the light's resolution (sigma = radius / 2); 0: no pre-filter"),
+        Parameter::choice("blur_kernel", blurKernel_, {"gaussian", "box"},
+                          "gaussian: as blur_radius says; box: a 2 x 2 box of moment texels in one bilinear fetch whatever "
+                          "the radius (the variance of blur_radius 2 at half resolution; on llvmpipe a quarter less shadow "
+                          "pass with every map redrawn, a few per cent more wrong pixels)"),
         Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit; exponential warps then at most c = 10 (esm) or 5.54 (evsm), what half floats hold"),
         Parameter::flag("mipmaps", mipmaps_, "trilinear mipmaps of the moments"),
         Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
@@ -171,7 +181,7 @@ TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const 
                                      : util::Digest()
                                            .add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp,
                                                 (*frame.lights)[i].shadow.polygonOffset, exponents(), space.near, space.far,
-                                                space.perspective, blurRadius_)
+                                                space.perspective, blurRadius_, blurKernel_)
                                            .value();
     const TexelRect moving = texelRect(frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}), vp, m.resolution);
     return m.derived[face].changed(key, moving, m.resolution);
@@ -212,9 +222,17 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     casterMoments_->set("uNear", space.near);
     casterMoments_->set("uFar", space.far);
     casterMoments_->set("uExponents", exponents());
+    glm::mat4 shifted = space.viewProj[face];
+    if (boxBlur_) {  // blur_box.frag's box is centred on texel p + 1/2: sample the casters half a texel off
+        const float half = 1.0f / static_cast<float>(m.resolution);
+        shifted = glm::mat4(1.0f);
+        shifted[3][0] = half;
+        shifted[3][1] = half;
+        shifted = shifted * space.viewProj[face];
+    }
     // Culled to the rectangle: a kept map redoes only the texels the animated casters changed.
-    frame.drawCasters(*casterMoments_, {Casters::Opaque, cropTo(texels, m.resolution) * space.viewProj[face], static_cast<int>(i),
-                                        Motion::Any, space.viewProj[face], true});
+    frame.drawCasters(*casterMoments_, {Casters::Opaque, cropTo(texels, m.resolution) * shifted, static_cast<int>(i),
+                                        Motion::Any, shifted, true});
 }
 
 void MomentShadowMap::convertMultisampled(std::size_t i, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
@@ -300,7 +318,7 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
-    if (built_ != std::pair{blurRadius_, halfResolution_}) buildPrograms();
+    if (built_ != std::tuple{blurRadius_, halfResolution_, blurKernel_}) buildPrograms();
     maps_.render(frame, DepthAndTintMaps::kEveryLight);  // the moments do not read the depth: the tint's test alone
     gl::DebugGroup group("moments");
     for (std::size_t i = 0; i < maps_.slots().size(); ++i) {

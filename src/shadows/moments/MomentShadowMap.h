@@ -8,6 +8,7 @@
 #include "shadows/moments/MomentWarp.h"
 
 #include <optional>
+#include <tuple>
 
 namespace penumbra::shadows {
 
@@ -84,7 +85,11 @@ private:
     Warp warp_;
     int blurRadius_ = 2;
     bool fp16_ = false, mipmaps_ = true, msaa_ = false, halfResolution_ = true;
-    std::pair<int, bool> built_{-1, false};  // the blur radius and half resolution the programs were built with
+    enum BlurKernel { kBlurGaussian = 0, kBlurBox = 1 };
+    int blurKernel_ = kBlurGaussian;
+    // The blur radius, half resolution and kernel the programs were built with.
+    std::tuple<int, bool, int> built_{-1, false, -1};
+    bool boxBlur_ = false;  // built with blur_box.frag: the moments' raster is shifted by half a texel
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
