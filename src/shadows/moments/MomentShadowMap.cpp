@@ -135,8 +135,6 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
     m.raw = gl::Texture::create2D(m.format, res, res);
     m.rawTarget = gl::Framebuffer::colourOnly(m.raw, -1, "unblurred moments");
-    m.scratch = gl::Texture::create2D(m.format, res, res);
-    m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
     m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
     m.raw.setWrap(GL_CLAMP_TO_EDGE);
     m.rasterDepth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
@@ -291,6 +289,10 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
         scissor(blurred);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     } else if (blurTaps_ > 0) {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
+        if (m.scratch.id() == 0) {  // only radii over 1 need it
+            m.scratch = gl::Texture::create2D(m.format, m.resolution, m.resolution);
+            m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
+        }
         blur_.use();
         m.scratchTarget.bind();
         blur_.set("uDirection", glm::ivec2(1, 0));
@@ -348,7 +350,8 @@ void MomentShadowMap::bindLookup(const gl::Program& lighting) const {
 std::size_t MomentShadowMap::memoryBytes() const {
     std::size_t total = maps_.memoryBytes();
     for (const auto& m : moments_)
-        total += m.moments.memoryBytes() + m.raw.memoryBytes() + m.scratch.memoryBytes() + m.multisampledDepth.memoryBytes();
+        total += m.moments.memoryBytes() + m.raw.memoryBytes() + m.scratch.memoryBytes() + m.rasterDepth.memoryBytes() +
+                 m.multisampledDepth.memoryBytes();
     return total;
 }
 

@@ -48,7 +48,8 @@ private:
         GLenum format = 0;
         int levels = 1;
         gl::Texture moments;
-        gl::Texture raw, scratch;  // 2D: the unblurred moments of one face, and those blurred along x
+        // 2D: the unblurred moments of one face, and those blurred along x (made for radii over 1)
+        gl::Texture raw, scratch;
         // Per face, per mip level: a render target, and a view of the level alone (mip input).
         std::vector<std::vector<gl::Framebuffer>> levelTargets;
         std::vector<std::vector<gl::Texture>> levelViews;
