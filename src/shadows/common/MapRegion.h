@@ -46,10 +46,11 @@ inline TexelRect intersection(const TexelRect& a, const TexelRect& b) {
 }
 
 // The texels of a square map of `resolution` that `bounds` can cover through `viewProj`, one
-// texel of margin around them: the whole map when a corner lies behind a perspective light's
-// eye, where its projection would flip.
+// texel of margin around them: of a box that reaches behind a perspective light's eye, its part
+// in front (nothing when it lies wholly behind).
 TexelRect texelRect(const scene::Bounds& bounds, const glm::mat4& viewProj, int resolution);
-// The same for any set of points (empty when there are none).
+// The same for any set of points (empty when there are none; the whole map when one lies behind
+// a perspective light's eye, where its projection would flip).
 TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj, int resolution);
 
 // Which texels of a map computed from one face of a depth map (moments, min/max depth tiles) must

@@ -269,51 +269,75 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
     // in one pass (radius 1, blur_bilinear.frag) by as much in x and y; in two, the y pass reads
     // the x-blurred texels as far again above and below, the x pass the unblurred ones as far
     // again left and right.
-    const bool bilinear = blurTaps_ == 1;
+    const bool onePass = blurTaps_ == 1;
     const TexelRect blurred = grown(changed, glm::ivec2(blurTaps_), m.resolution);
     const TexelRect xBlurred = grown(blurred, glm::ivec2(0, blurTaps_), m.resolution);
-    const TexelRect unblurred = bilinear ? grown(blurred, glm::ivec2(1), m.resolution) : grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
+    const TexelRect unblurred = onePass ? grown(blurred, glm::ivec2(1), m.resolution) : grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
     glEnable(GL_SCISSOR_TEST);
     if (m.multisampledDepth.id() != 0)
         convertMultisampled(i, face, blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0], blurTaps_ > 0 ? unblurred : blurred, frame);
     else
         rasterMoments(i, face, blurTaps_ > 0 ? m.rawRaster : m.levelRaster[face], blurTaps_ > 0 ? unblurred : blurred, frame);
+    // Where no caster can have written, even through the blur, every level holds the moments of
+    // the far plane: cleared there, blurred and mip-mapped only where a caster reaches (a point
+    // light's cube face that looks at the sky costs two clears).
+    const glm::mat4& vp = (*frame.lightSpaces)[i].viewProj[face];
+    const TexelRect cast = texelRect(frame.casterBounds({Casters::Opaque, vp, static_cast<int>(i), Motion::Any}), vp, m.resolution);
+    const TexelRect reached = intersection(blurred, grown(cast, glm::ivec2(blurTaps_ + 1), m.resolution));
+    const glm::vec4 far = farMoments();
     const auto scissor = [](const TexelRect& r) { glScissor(r.x, r.y, r.z - r.x, r.w - r.y); };
+    const auto clearOutside = [&](const gl::Framebuffer& target, const TexelRect& all, const TexelRect& drawn) {
+        if (isEmpty(drawn)) {
+            clearColourIn(target.id(), all, far);
+        } else {  // the strips of `all` below, above, left and right of `drawn`
+            clearColourIn(target.id(), {all.x, all.y, all.z, drawn.y}, far);
+            clearColourIn(target.id(), {all.x, drawn.w, all.z, all.w}, far);
+            clearColourIn(target.id(), {all.x, drawn.y, drawn.x, drawn.w}, far);
+            clearColourIn(target.id(), {drawn.z, drawn.y, all.z, drawn.w}, far);
+        }
+        glEnable(GL_SCISSOR_TEST);  // clearColourIn's scope ends it
+    };
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     glViewport(0, 0, m.resolution, m.resolution);
     fullscreenVao_.bind();
-    if (bilinear) {  // raw -> map, x and y at once
+    if (blurTaps_ > 0) clearOutside(m.levelTargets[face][0], blurred, reached);
+    if (blurTaps_ > 0 && !isEmpty(reached)) {
         blur_.use();
-        m.levelTargets[face][0].bind();
-        m.raw.bind(0);
-        scissor(blurred);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    } else if (blurTaps_ > 0) {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
-        if (m.scratch.id() == 0) {  // only radii over 1 need it
-            m.scratch = gl::Texture::create2D(m.format, m.resolution, m.resolution);
-            m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
+        if (onePass) {  // raw -> map, x and y at once
+            m.levelTargets[face][0].bind();
+            m.raw.bind(0);
+            scissor(reached);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        } else {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)
+            if (m.scratch.id() == 0) {  // only radii over 1 need it
+                m.scratch = gl::Texture::create2D(m.format, m.resolution, m.resolution);
+                m.scratchTarget = gl::Framebuffer::colourOnly(m.scratch, -1, "moment blur scratch");
+            }
+            m.scratchTarget.bind();
+            blur_.set("uDirection", glm::ivec2(1, 0));
+            m.raw.bind(0);
+            scissor(intersection(xBlurred, grown(reached, glm::ivec2(0, blurTaps_), m.resolution)));
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            m.levelTargets[face][0].bind();
+            blur_.set("uDirection", glm::ivec2(0, 1));
+            m.scratch.bind(0);
+            scissor(reached);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
         }
-        blur_.use();
-        m.scratchTarget.bind();
-        blur_.set("uDirection", glm::ivec2(1, 0));
-        m.raw.bind(0);
-        scissor(xBlurred);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        m.levelTargets[face][0].bind();
-        blur_.set("uDirection", glm::ivec2(0, 1));
-        m.scratch.bind(0);
-        scissor(blurred);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    TexelRect level = blurred;
+    TexelRect level = blurred, levelReached = reached;
     downsample_.use();
     for (int l = 1; l < m.levels; ++l) {
         const int size = std::max(1, m.resolution >> l);
         level = coarser(level, 2, size);
+        levelReached = intersection(level, coarser(levelReached, 2, size));
         glViewport(0, 0, size, size);
-        m.levelTargets[face][static_cast<std::size_t>(l)].bind();
+        const gl::Framebuffer& target = m.levelTargets[face][static_cast<std::size_t>(l)];
+        clearOutside(target, level, levelReached);
+        if (isEmpty(levelReached)) continue;
+        target.bind();
         m.levelViews[face][static_cast<std::size_t>(l - 1)].bind(0);
-        scissor(level);
+        scissor(levelReached);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glDisable(GL_SCISSOR_TEST);
