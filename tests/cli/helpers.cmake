@@ -38,3 +38,18 @@ endfunction()
 
 # A third-party program (chromium, ...) without the sanitizer preload (see penumbra_in_xvfb).
 set(WITHOUT_PRELOAD env -u LD_PRELOAD)
+
+# Fails unless the JSON value at path ARGN in `doc` reads `expected` (a count for a LENGTH path:
+# give "LENGTH" as the first path element).
+function(expect_json doc expected)
+  if(ARGV2 STREQUAL "LENGTH")
+    list(REMOVE_AT ARGN 0)
+    string(JSON value LENGTH "${doc}" ${ARGN})
+  else()
+    string(JSON value GET "${doc}" ${ARGN})
+  endif()
+  if(NOT value STREQUAL expected)
+    list(JOIN ARGN " " path)
+    message(FATAL_ERROR "JSON ${path}: '${value}', expected '${expected}'")
+  endif()
+endfunction()
