@@ -73,7 +73,6 @@ std::vector<bench::BenchCase> onePass(const BenchJob& job) {
     return cases;
 }
 
-
 // "[#########.........]  3/12  hard 2048 @default  47%" on stderr, rewritten in place.
 void drawProgress(std::size_t index, std::size_t count, const bench::BenchCase& c, double fraction) {
     constexpr int width = 24;

@@ -114,11 +114,11 @@ public:
     // Turns the tint maps on or off; the maps are made again on the next render.
     void setWithTint(bool withTint);
     bool withTint() const { return withTint_; }
-    // `depthElsewhere` (a light index, -1: none, kEveryLight: all): a light whose opaque depth the
-    // technique keeps in a map of its own (cascades, warped maps, moments). Its plain depth map is drawn only when
-    // translucent casters need it as the depth test of the tint pass, and then only under them
-    // (culled and scissored to their texels); otherwise the light costs no pass here (measured on
-    // the 975k-triangle grid: 965k triangles per frame saved).
+    // `elsewhere` (a light index, -1: none, kEveryLight: all): a light whose opaque depth the
+    // technique keeps in a map of its own (cascades, warped maps, moments). Its plain depth map is
+    // drawn only when translucent casters need it as the depth test of the tint pass, and then
+    // only under them (culled and scissored to their texels); otherwise the light costs no pass
+    // here (measured on the 975k-triangle grid: 965k triangles per frame saved).
     // `translucentPass` (may be empty): the technique's own pass of translucent casters tested
     // against this depth (CSSM's colour map), called per light and face right after the tint's.
     // The depth it tests against then holds the animated opaque casters only where a translucent
@@ -126,7 +126,7 @@ public:
     // their texels only then); without it, only the plain tint (NearestLayer) is drawn that way.
     using TranslucentPass = std::function<void(std::size_t light, std::size_t face)>;
     static constexpr int kEveryLight = -2;
-    void render(const ShadowFrame& frame, int depthElsewhere = -1, const TranslucentPass& translucentPass = {});
+    void render(const ShadowFrame& frame, int elsewhere = -1, const TranslucentPass& translucentPass = {});
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
     void bind(bool rawDepth = false) const;
