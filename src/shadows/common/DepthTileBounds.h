@@ -52,11 +52,14 @@ private:
     struct Layer {
         int light = -1, resolution = 0;
         DerivedTexels derived;
+        bool neverAgrees = false;  // every level holds bounds that never agree (neverAgree)
         std::vector<gl::Framebuffer> levelTargets;
         std::vector<gl::Texture> levelViews;  // each level alone: the next one's input, no feedback loop
     };
     void ensure(int tilesAcross, int layers, int levels);
     void updateLayer(Layer& layer, const gl::Texture& depth, const TexelRect& changed);
+    // Sets layer `slot` to bounds that never agree (once), for a map nothing of which is kept.
+    void neverAgree(Layer& layer, int slot);
 
     gl::Texture bounds_;
     int tilesAcross_ = 0;  // at level 0, a power of two
