@@ -85,8 +85,11 @@ void expectTileBoundsMadeWhole(Pair& pair, const scene::Scene& s, float time, co
         pair.reusing.render(time, s.camera, 64, 64, pair.target.framebuffer());
     }
     std::size_t k = 0;
-    for (const auto& v : pair.reusing.technique().debugViews())
-        if (isTileBounds(v)) EXPECT_EQ(differingTexels(kept.at(k++), textureLevels(v)), 0u) << v.label << ", " << what;
+    for (const auto& v : pair.reusing.technique().debugViews()) {
+        if (isTileBounds(v)) {
+            EXPECT_EQ(differingTexels(kept.at(k++), textureLevels(v)), 0u) << v.label << ", " << what;
+        }
+    }
 }
 
 // Both renderers draw the frame at `time`: the same pictures and the same maps. Cascades drawn
