@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The NVIDIA measurements of the README's "Measured on an NVIDIA H100", in one run (~7 min on an
-# H100, plus ~1 min for the goal ratios in rounds that come first since stop 67). On the GPU
+# H100, plus ~2 min for the goal ratios and stop 68's choices in rounds that come first). On the GPU
 # machine, from the project root, after building here, `scripts/fetch-assets.sh` and
 # `../shared/tools/gpu-bundle.sh`:
 #     source .gpu/env.sh; scripts/gpu-measure.sh [OUT_DIR]
@@ -50,6 +50,11 @@ step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmu
 rounds=(--rounds 8 --seconds 0.5 --warmup-seconds 0.5 --interleave 9 --no-images)
 step "goal ratios, default scene" 90 penumbra bench --techniques none,hard,cssm2,cssm1,pcf-poisson16,pcss "${rounds[@]}" --out "$work/goals-default"
 step "goal ratios, glass scene" 60 penumbra bench scenes/glass.json --techniques hard,cssm2,cssm1 --fixed-camera "${rounds[@]}" --out "$work/goals-glass"
+# Stop 68's two llvmpipe-made choices, in rounds with every map redrawn: the depth tile bounds,
+# made only for kept maps (on llvmpipe their pass cost more than the taps they saved; on a GPU the
+# pass is cheap), against `tile_bounds_every_frame=true`, which makes them as before; and the
+# moment maps' blur kernels (the box saved a quarter of the pass there).
+step "stop 68 choices, maps redrawn" 120 penumbra bench --techniques hard,pcf-poisson16,pcf-poisson16:tile_bounds_every_frame=true,pcss,pcss:tile_bounds_every_frame=true,vsm,vsm:blur_kernel=box --redraw-shadow-maps "${rounds[@]}" --out "$work/stop68"
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
 # The view-dependent maps against hard from the scene's own camera, as the llvmpipe tables take them.
 step "default scene, fixed camera" 40 penumbra bench --techniques none,hard,cascaded,lispsm,psm "${hd[@]}" --fixed-camera "${short[@]}" --out "$work/fixed"

@@ -207,6 +207,10 @@ TEST(TileBounds, AMapDrawnWholeEveryFrameHasBoundsThatNeverAgree) {
     };
     EXPECT_EQ(planesAgreeing(pair.redrawing), 0u) << "maps drawn whole every frame: no bounds made";
     EXPECT_GT(planesAgreeing(pair.reusing), 100u) << "kept maps: bounds made";
+    // `tile_bounds_every_frame` makes them for such maps too (to measure the choice on a GPU).
+    shadows::applyParameters(pair.redrawing.technique().parameters(), {{"tile_bounds_every_frame", "true"}});
+    pair.render(s, 0.5f);
+    EXPECT_GT(planesAgreeing(pair.redrawing), 100u) << "tile_bounds_every_frame: bounds made";
 }
 
 // Without an animated caster, the second frame of an unchanged view draws no triangle into any

@@ -47,7 +47,7 @@ void DepthTileBounds::ensure(int tilesAcross, int layers, int levels) {
         }
 }
 
-void DepthTileBounds::update(const DepthAndTintMaps& maps, float reachTexels) {
+void DepthTileBounds::update(const DepthAndTintMaps& maps, float reachTexels, bool everyFrame) {
     const ShadowSlots& slots = maps.slots();
     int widest = 0, layers = 0;
     for (std::size_t i = 0; i < slots.size(); ++i)
@@ -77,12 +77,12 @@ void DepthTileBounds::update(const DepthAndTintMaps& maps, float reachTexels) {
         if (layer.light != static_cast<int>(i) || layer.resolution != map.resolution) layer.derived = DerivedTexels{};
         layer.light = static_cast<int>(i);
         layer.resolution = map.resolution;
-        if (map.stillKeys[0] == 0) {  // a map drawn whole every frame: bounds that never agree, once
+        if (map.stillKeys[0] == 0 && !everyFrame) {  // a map drawn whole every frame: bounds that never agree, once
             neverAgree(layer, slots.slot[i]);
             continue;
         }
         layer.neverAgrees = false;
-        const std::uint64_t key = util::Digest().add(map.stillKeys[0], map.resolution).value();
+        const std::uint64_t key = map.stillKeys[0] == 0 ? 0 : util::Digest().add(map.stillKeys[0], map.resolution).value();
         const TexelRect changed = layer.derived.changed(key, map.movingTexels[0], map.resolution);
         if (!isEmpty(changed)) updateLayer(layer, map.depth, changed);
     }

@@ -37,7 +37,9 @@ public:
     // < 0: every level). Where a kernel reaches a few texels, as PCF's default 1.5-texel radius
     // does, one level serves: measured on llvmpipe, every further level cost a pass of 0.03-0.18 ms
     // per light and frame while anything animated reached the map.
-    void update(const DepthAndTintMaps& maps, float reachTexels = -1.0f);
+    // `everyFrame`: make them also for maps of which nothing is kept (drawn whole every frame),
+    // which otherwise get bounds that never agree (neverAgree).
+    void update(const DepthAndTintMaps& maps, float reachTexels = -1.0f, bool everyFrame = false);
     // The finest level whose tiles' border holds every texel within `reachTexels` of a receiver
     // (depth_tiles.glsl's tileAround computes the same).
     static int levelFor(float reachTexels);

@@ -12,7 +12,7 @@ class KernelTechnique : public SharedMapTechnique {
 public:
     void renderMaps(const ShadowFrame& frame) override {
         maps_.render(frame);
-        if (skipAgreeing_) tileBounds_.update(maps_, tileReachTexels());
+        if (skipAgreeing_) tileBounds_.update(maps_, tileReachTexels(), boundsEveryFrame_);
         else tileBounds_.forget();  // stale from here on: remade whole when turned on again
     }
     std::size_t memoryBytes() const override { return maps_.memoryBytes() + tileBounds_.memoryBytes(); }
@@ -27,8 +27,11 @@ protected:
     // known, every level of the tile bounds is made).
     virtual float tileReachTexels() const = 0;
     // `what`: which taps the lookup skips where the bounds show their answer.
-    Parameter skipAgreeingParameter(const std::string& what) {
-        return Parameter::flag("skip_agreeing_taps", skipAgreeing_, what + " (same pixels)");
+    std::vector<Parameter> skipAgreeingParameters(const std::string& what) {
+        return {Parameter::flag("skip_agreeing_taps", skipAgreeing_, what + " (same pixels)"),
+                Parameter::flag("tile_bounds_every_frame", boundsEveryFrame_,
+                                "make the depth tile bounds also for maps drawn whole every frame (on llvmpipe "
+                                "they cost more than the taps they save there; on a GPU, measure)")};
     }
     void bindTileBounds(const gl::Program& lighting) const {
         tileBounds_.bind();
@@ -38,6 +41,7 @@ protected:
 private:
     DepthTileBounds tileBounds_;
     bool skipAgreeing_ = true;
+    bool boundsEveryFrame_ = false;  // DepthTileBounds::update's `everyFrame`
 };
 
 }  // namespace penumbra::shadows

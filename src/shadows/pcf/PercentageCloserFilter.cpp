@@ -44,8 +44,9 @@ std::vector<Parameter> PercentageCloserFilter::declareParameters() {
         Parameter::real("radius_texels", radiusTexels_, 0.0f, 16.0f, "filter radius in shadow-map texels"),
         Parameter::real("radius_world", radiusWorld_, 0.0f, 2.0f, "> 0: filter radius in world units instead of texels"),
         Parameter::flag("receiver_plane_bias", receiverPlane_,
-                        "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)"),
-        skipAgreeingParameter("skip the taps where depth bounds of the receiver's tile show they all agree")};
+                        "extrapolate the receiver's depth along its plane to every tap (Isidoro 2006)")};
+    for (Parameter& q : skipAgreeingParameters("skip the taps where depth bounds of the receiver's tile show they all agree"))
+        p.push_back(std::move(q));
     if (kernel_ == Kernel::Grid || kernel_ == Kernel::Gaussian)
         p.push_back(Parameter::integer("kernel_size", kernelSize_, 1, 9, "N of the N x N grid"));
     if (kernel_ == Kernel::Poisson || kernel_ == Kernel::Random || kernel_ == Kernel::Rotated || kernel_ == Kernel::Adaptive)
