@@ -67,7 +67,7 @@ std::vector<bench::BenchCase> onePass(const BenchJob& job) {
     if (resolutions.empty()) resolutions.push_back(0);
     for (const fs::path& scene : scenes)
         for (const std::string& spec : techniques) {
-            auto [technique, parameters] = splitTechniqueParameters(spec);
+            auto [technique, parameters] = shadows::splitTechniqueParameters(spec);
             for (int res : resolutions) cases.push_back({"", scene, technique, res, parameters, ""});
         }
     return cases;
@@ -232,20 +232,6 @@ int runBench(const BenchJob& job) {
     printRoundRatios(results);
     std::printf("wrote %s/bench.json, bench.csv and report.html\n", job.outDir.string().c_str());
     return 0;
-}
-
-std::pair<std::string, shadows::ParameterValues> splitTechniqueParameters(const std::string& spec) {
-    std::stringstream in(spec);
-    std::string name, part;
-    std::getline(in, name, ':');
-    shadows::ParameterValues parameters;
-    while (std::getline(in, part, ':')) {
-        const std::size_t equals = part.find('=');
-        if (equals == std::string::npos || equals == 0)
-            throw std::invalid_argument("'" + spec + "': expected name:parameter=value[:parameter=value...], not '" + part + "'");
-        parameters.emplace_back(part.substr(0, equals), part.substr(equals + 1));
-    }
-    return {name, parameters};
 }
 
 }  // namespace penumbra::app

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace penumbra::app {
@@ -30,8 +29,5 @@ struct BenchJob {
 };
 
 int runBench(const BenchJob& job);
-
-// "name:p=v:q=w" -> ("name", {{"p", "v"}, {"q", "w"}}); throws std::invalid_argument on a part without '='.
-std::pair<std::string, shadows::ParameterValues> splitTechniqueParameters(const std::string& spec);
 
 }  // namespace penumbra::app

@@ -83,21 +83,13 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
 
 render::RenderOptions splitSideOptions(const render::RenderOptions& left, const std::string& spec) {
     render::RenderOptions right = left;
-    const std::size_t colon = spec.find(':');
-    right.technique = spec.substr(0, colon);
+    right.technique = spec.substr(0, spec.find(':'));
     if (!shadows::isKnownTechnique(right.technique))
         throw std::invalid_argument("--split: unknown shadow technique '" + right.technique + "'; known: " + shadows::knownTechniqueNames());
-    right.parameters.clear();
-    if (colon == std::string::npos) return right;
-    std::size_t start = colon + 1;
-    while (start <= spec.size()) {
-        const std::size_t comma = std::min(spec.find(',', start), spec.size());
-        try {
-            right.parameters.push_back(shadows::parseParameter(spec.substr(start, comma - start)));
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument(std::string("--split: ") + e.what());
-        }
-        start = comma + 1;
+    try {
+        right.parameters = shadows::splitTechniqueParameters(spec, ',').second;
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--split: ") + e.what());
     }
     return right;
 }

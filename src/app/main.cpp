@@ -148,9 +148,10 @@ int main(int argc, char** argv) {
                 if (spec.empty()) continue;
                 std::string name;
                 try {
-                    name = app::splitTechniqueParameters(spec).first;
+                    name = shadows::splitTechniqueParameters(spec).first;
                 } catch (const std::invalid_argument& e) {
-                    throw CLI::ValidationError("--techniques", e.what());
+                    throw CLI::ValidationError("--techniques", "'" + spec + "': expected name:parameter=value[:parameter=value...] (" +
+                                                                   e.what() + ")");
                 }
                 if (name != "all" && !bench::isFloor(name) && !shadows::isKnownTechnique(name)) {
                     std::string known = "all, " + shadows::knownTechniqueNames();

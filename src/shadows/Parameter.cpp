@@ -132,4 +132,16 @@ std::pair<std::string, std::string> parseParameter(const std::string& text) {
     return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+std::pair<std::string, ParameterValues> splitTechniqueParameters(const std::string& spec, char separator) {
+    const std::size_t colon = spec.find(':');
+    std::pair<std::string, ParameterValues> out{spec.substr(0, colon), {}};
+    if (colon == std::string::npos) return out;
+    for (std::size_t start = colon + 1; start <= spec.size();) {
+        const std::size_t end = std::min(spec.find(separator, start), spec.size());
+        out.second.push_back(parseParameter(spec.substr(start, end - start)));
+        start = end + 1;
+    }
+    return out;
+}
+
 }  // namespace penumbra::shadows

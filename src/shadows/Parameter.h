@@ -4,6 +4,7 @@
 // its label and a flag takes true/false (or on/off, 1/0); `penumbra techniques --verbose` prints
 // each with its range, default and help. The technique owns the value; a Parameter points at it.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace penumbra::shadows {
@@ -45,6 +46,11 @@ using ParameterValues = std::vector<std::pair<std::string, std::string>>;
 // Sets the named parameters the list has; returns the names it does not have. Throws
 // std::invalid_argument for a value a parameter does not accept.
 std::vector<std::string> applyParameters(std::vector<Parameter> parameters, const ParameterValues& values);
+
+// "technique:name=value<separator>name=value..." -> ("technique", values), each part as
+// parseParameter takes it (and throws). `bench --techniques` and the tests separate by ':' (their
+// list is comma-separated), `--split` by ','.
+std::pair<std::string, ParameterValues> splitTechniqueParameters(const std::string& spec, char separator = ':');
 // Splits "name=value"; throws std::invalid_argument on text without '='.
 std::pair<std::string, std::string> parseParameter(const std::string& text);
 

@@ -90,10 +90,7 @@ std::string testNameOf(std::string technique) {
 
 render::RenderOptions optionsFor(const std::string& technique) {
     render::RenderOptions o;
-    const std::size_t colon = technique.find(':'), equals = technique.find('=');
-    o.technique = technique.substr(0, colon);
-    if (colon != std::string::npos)
-        o.parameters.emplace_back(technique.substr(colon + 1, equals - colon - 1), technique.substr(equals + 1));
+    std::tie(o.technique, o.parameters) = shadows::splitTechniqueParameters(technique);
     return o;
 }
 

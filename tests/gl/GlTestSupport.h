@@ -38,7 +38,7 @@ struct VisibilitySpan {
 // ("pcf-bilinear" -> "pcf_bilinear", "cssm2:filter=poisson16" -> "cssm2_filter_poisson16").
 std::string testNameOf(std::string technique);
 
-// Options for a technique that may carry one parameter: "cssm2:xi=white".
+// Options for a technique that may carry parameters: "cssm2:xi=white", "vsm:blur_kernel=box:mipmaps=false".
 render::RenderOptions optionsFor(const std::string& technique);
 
 // Renders `scene` at time 0 from its camera with `options` and returns the linear picture.
