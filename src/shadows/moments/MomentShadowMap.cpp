@@ -48,7 +48,6 @@ void MomentShadowMap::buildPrograms() {
     alphaTested.defines.emplace_back("ALPHA_TEST 1");
     casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
-    boxBlur_ = box;
     built_ = {blurRadius_, halfResolution_, blurKernel_};
 }
 
@@ -134,11 +133,10 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
     m.raw = gl::Texture::create2D(m.format, res, res);
-    m.rawTarget = gl::Framebuffer::colourOnly(m.raw, -1, "unblurred moments");
     m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
     m.raw.setWrap(GL_CLAMP_TO_EDGE);
     m.rasterDepth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
-    m.rawRaster = gl::Framebuffer::colourAndDepth(m.raw, m.rasterDepth, "unblurred moments' raster");
+    m.rawTarget = gl::Framebuffer::colourAndDepth(m.raw, m.rasterDepth, "unblurred moments");
     if (msaa) {  // llvmpipe offers at most 4 samples
         m.multisampledDepth = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, depth.resolution, depth.resolution, 4);
         m.multisampledTarget.attach(GL_DEPTH_ATTACHMENT, m.multisampledDepth);
@@ -156,15 +154,20 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
             m.levelViews[face].back().setFilter(GL_LINEAR, GL_LINEAR);  // downsample.frag's fetch
             m.levelViews[face].back().setWrap(GL_CLAMP_TO_EDGE);
         }
-        gl::Framebuffer raster;
-        if (m.cube) raster.attachLayer(GL_COLOR_ATTACHMENT0, m.moments, f, 0);
-        else raster.attach(GL_COLOR_ATTACHMENT0, m.moments);
-        raster.attach(GL_DEPTH_ATTACHMENT, m.rasterDepth);
-        raster.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        raster.checkComplete("moment map's raster");
-        m.levelRaster.push_back(std::move(raster));
+        // Level 0 takes the casters' raster without a blur: the moments' depth buffer goes with it.
+        m.levelTargets[static_cast<std::size_t>(f)][0].attach(GL_DEPTH_ATTACHMENT, m.rasterDepth);
+        m.levelTargets[static_cast<std::size_t>(f)][0].checkComplete("moment map with its depth buffer");
     }
     m.derived.assign(static_cast<std::size_t>(faces), DerivedTexels{});
+}
+
+// moments.glsl's uniforms, on a program or a caster program pair.
+template <class Program>
+static void setMomentUniforms(const Program& program, const LightSpace& space, glm::vec2 exponents) {
+    program.set("uPerspective", space.perspective ? 1 : 0);
+    program.set("uNear", space.near);
+    program.set("uFar", space.far);
+    program.set("uExponents", exponents);
 }
 
 TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const ShadowFrame& frame) {
@@ -216,12 +219,9 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);
-    casterMoments_->set("uPerspective", space.perspective ? 1 : 0);
-    casterMoments_->set("uNear", space.near);
-    casterMoments_->set("uFar", space.far);
-    casterMoments_->set("uExponents", exponents());
+    setMomentUniforms(*casterMoments_, space, exponents());
     glm::mat4 shifted = space.viewProj[face];
-    if (boxBlur_) {  // blur_box.frag's box is centred on texel p + 1/2: sample the casters half a texel off
+    if (boxBlur()) {  // blur_box.frag's box is centred on texel p + 1/2: sample the casters half a texel off
         const float half = 1.0f / static_cast<float>(m.resolution);
         shifted = glm::mat4(1.0f);
         shifted[3][0] = half;
@@ -252,10 +252,7 @@ void MomentShadowMap::convertMultisampled(std::size_t i, std::size_t face, const
     glEnable(GL_SCISSOR_TEST);
     glViewport(0, 0, m.resolution, m.resolution);
     fullscreenVao_.bind();
-    toMoments_.set("uPerspective", space.perspective ? 1 : 0);
-    toMoments_.set("uNear", space.near);
-    toMoments_.set("uFar", space.far);
-    toMoments_.set("uExponents", exponents());
+    setMomentUniforms(toMoments_, space, exponents());
     toMoments_.use();
     m.multisampledDepth.bind(1);
     target.bind();
@@ -277,7 +274,7 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
     if (m.multisampledDepth.id() != 0)
         convertMultisampled(i, face, blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0], blurTaps_ > 0 ? unblurred : blurred, frame);
     else
-        rasterMoments(i, face, blurTaps_ > 0 ? m.rawRaster : m.levelRaster[face], blurTaps_ > 0 ? unblurred : blurred, frame);
+        rasterMoments(i, face, blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0], blurTaps_ > 0 ? unblurred : blurred, frame);
     // Where no caster can have written, even through the blur, every level holds the moments of
     // the far plane: cleared there, blurred and mip-mapped only where a caster reaches (a point
     // light's cube face that looks at the sky costs two clears).

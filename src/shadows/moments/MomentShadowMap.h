@@ -50,16 +50,13 @@ private:
         gl::Texture moments;
         // 2D: the unblurred moments of one face, and those blurred along x (made for radii over 1)
         gl::Texture raw, scratch;
-        // Per face, per mip level: a render target, and a view of the level alone (mip input).
+        // Per face, per mip level: a render target (level 0's with rasterDepth), and a view of the
+        // level alone (mip input).
         std::vector<std::vector<gl::Framebuffer>> levelTargets;
         std::vector<std::vector<gl::Texture>> levelViews;
         std::vector<DerivedTexels> derived;  // per face: what the moments were made from
-        gl::Framebuffer rawTarget, scratchTarget;
-        // The casters' own raster (not with MSAA): a depth buffer at the moments' resolution, and
-        // the unblurred moments (blur) or each face's level 0 (no blur) with it attached.
-        gl::Texture rasterDepth;
-        gl::Framebuffer rawRaster;
-        std::vector<gl::Framebuffer> levelRaster;
+        gl::Framebuffer rawTarget, scratchTarget;  // rawTarget: raw with rasterDepth
+        gl::Texture rasterDepth;  // the casters' own raster (not with MSAA), at the moments' resolution
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;
     };
@@ -90,7 +87,8 @@ private:
     int blurKernel_ = kBlurGaussian;
     // The blur radius, half resolution and kernel the programs were built with.
     std::tuple<int, bool, int> built_{-1, false, -1};
-    bool boxBlur_ = false;  // built with blur_box.frag: the moments' raster is shifted by half a texel
+    // Built with blur_box.frag: the moments' raster is shifted by half a texel.
+    bool boxBlur() const { return std::get<2>(built_) == kBlurBox && std::get<0>(built_) > 0; }
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
