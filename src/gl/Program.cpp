@@ -71,6 +71,7 @@ void Program::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv
 void Program::set(const char* n, const glm::ivec2& v) const { glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec3& v) const { glProgramUniform3fv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec4& v) const { glProgramUniform4fv(id(), location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::ivec4& v) const { glProgramUniform4iv(id(), location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::mat4& v) const {
     glProgramUniformMatrix4fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v));
 }

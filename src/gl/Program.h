@@ -31,6 +31,7 @@ public:
     void set(const char* name, const glm::ivec2& v) const;
     void set(const char* name, const glm::vec3& v) const;
     void set(const char* name, const glm::vec4& v) const;
+    void set(const char* name, const glm::ivec4& v) const;
     void set(const char* name, const glm::mat4& v) const;
 
 private:

@@ -66,6 +66,11 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
         Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit; exponential warps then at most c = 10 (esm) or 5.54 (evsm), what half floats hold"),
         Parameter::flag("mipmaps", mipmaps_, "trilinear mipmaps of the moments"),
         Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
+        Parameter::flag("compute_blur", computeBlur_,
+                        "the radius-1 Gaussian (blur_radius 1-2 at half resolution) or the box, and mip levels 1-4, in one "
+                        "compute pass with the moments in shared memory (blur_mips.comp) instead of a blur pass and a pass "
+                        "per level; the same moments. For GPUs: on llvmpipe its shadow pass is 7x the fragment passes' "
+                        "(shared memory is slow there)"),
         Parameter::flag("msaa", msaa_,
                         "moments averaged over a 4x multisampled depth map at the light's resolution (smoother "
                         "silhouettes at several times the cost; without it the casters' moments are drawn directly)"),
@@ -260,6 +265,58 @@ void MomentShadowMap::convertMultisampled(std::size_t i, std::size_t face, const
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+// The GLSL image format qualifier of the moments' internal formats.
+static const char* imageFormatQualifier(GLenum format) {
+    switch (format) {
+        case GL_R32F: return "r32f";
+        case GL_RG32F: return "rg32f";
+        case GL_R16F: return "r16f";
+        case GL_RG16F: return "rg16f";
+        case GL_RGBA16F: return "rgba16f";
+        default: return "rgba32f";
+    }
+}
+
+int MomentShadowMap::blurAndMipInCompute(std::size_t i, std::size_t face, const std::vector<TexelRect>& reached) {
+    constexpr int kTile = 16, kMostLevels = 5;  // blur_mips.comp's tile, and level 0 with the four beneath it
+    LightMoments& m = moments_[i];
+    if (blurMipsFormat_ != m.format) {
+        blurMips_ = gl::Program::build({.compute = "src/shadows/moments/blur_mips.comp",
+                                        .defines = {std::string("MOMENT_IMAGE_FORMAT ") + imageFormatQualifier(m.format)}});
+        blurMipsFormat_ = m.format;
+    }
+    const int made = std::min(m.levels, kMostLevels);
+    // The kernel on each axis over texels p - 1, p, p + 1: blur_box.frag's box (its raster shifted
+    // half a texel), or blur_bilinear.frag's Gaussian.
+    glm::vec3 weights(0.0f, 0.5f, 0.5f);
+    if (!boxBlur()) {
+        const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / (halfResolution_ ? 2.0f : 1.0f), 0.5f);
+        const float g = std::exp(-1.0f / (2.0f * sigma * sigma)), w = g / (1.0f + 2.0f * g);
+        weights = {w, 1.0f - 2.0f * w, w};
+    }
+    blurMips_.set("uWeights", weights);
+    blurMips_.set("uLevels", made);
+    for (int l = 0; l < kMostLevels; ++l) {
+        const auto level = static_cast<std::size_t>(std::min(l, made - 1));  // units past `made` are never written
+        glBindImageTexture(static_cast<GLuint>(l), m.levelViews[face][level].id(), 0, GL_FALSE, 0,
+                           l == 0 ? GL_READ_WRITE : GL_WRITE_ONLY, m.format);
+        const std::string name = "uLevelRect[" + std::to_string(l) + "]";
+        blurMips_.set(name.c_str(), l < made ? reached[static_cast<std::size_t>(l)] : TexelRect(0));
+    }
+    const TexelRect& r = reached[0];
+    const glm::ivec2 origin = glm::ivec2(r.x, r.y) / kTile * kTile;
+    const glm::ivec2 groups = (glm::ivec2(r.z, r.w) - origin + (kTile - 1)) / kTile;
+    blurMips_.set("uTileOrigin", origin);
+    m.raw.bind(0);
+    blurMips_.use();
+    glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
+    // The levels are sampled next (the fragment levels below, the lookup), level 0 loaded again by
+    // the next frame's dispatch.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glBindImageTextures(0, kMostLevels, nullptr);
+    return made;
+}
+
 void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& changed, const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
     // `changed`: moment texels whose unblurred moments changed. The blur spreads that by its taps:
@@ -294,11 +351,21 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
         }
         glEnable(GL_SCISSOR_TEST);  // clearColourIn's scope ends it
     };
+    // Per level, the texels made again and those of them a caster reaches.
+    std::vector<TexelRect> levelRect{blurred}, levelReached{reached};
+    for (int l = 1; l < m.levels; ++l) {
+        const int size = std::max(1, m.resolution >> l);
+        levelRect.push_back(coarser(levelRect.back(), 2, size));
+        levelReached.push_back(intersection(levelRect.back(), coarser(levelReached.back(), 2, size)));
+    }
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     glViewport(0, 0, m.resolution, m.resolution);
     fullscreenVao_.bind();
     if (blurTaps_ > 0) clearOutside(m.levelTargets[face][0], blurred, reached);
-    if (blurTaps_ > 0 && !isEmpty(reached)) {
+    int made = 1;  // levels made by the blur's pass
+    if (blurTaps_ > 0 && !isEmpty(reached) && computeBlur_ && onePass) {
+        made = blurAndMipInCompute(i, face, levelReached);
+    } else if (blurTaps_ > 0 && !isEmpty(reached)) {
         blur_.use();
         if (onePass) {  // raw -> map, x and y at once
             m.levelTargets[face][0].bind();
@@ -322,19 +389,16 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
     }
-    TexelRect level = blurred, levelReached = reached;
     downsample_.use();
     for (int l = 1; l < m.levels; ++l) {
-        const int size = std::max(1, m.resolution >> l);
-        level = coarser(level, 2, size);
-        levelReached = intersection(level, coarser(levelReached, 2, size));
-        glViewport(0, 0, size, size);
-        const gl::Framebuffer& target = m.levelTargets[face][static_cast<std::size_t>(l)];
-        clearOutside(target, level, levelReached);
-        if (isEmpty(levelReached)) continue;
+        const auto level = static_cast<std::size_t>(l);
+        glViewport(0, 0, std::max(1, m.resolution >> l), std::max(1, m.resolution >> l));
+        const gl::Framebuffer& target = m.levelTargets[face][level];
+        clearOutside(target, levelRect[level], levelReached[level]);
+        if (l < made || isEmpty(levelReached[level])) continue;
         target.bind();
-        m.levelViews[face][static_cast<std::size_t>(l - 1)].bind(0);
-        scissor(levelReached);
+        m.levelViews[face][level - 1].bind(0);
+        scissor(levelReached[level]);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glDisable(GL_SCISSOR_TEST);

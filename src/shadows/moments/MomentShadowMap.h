@@ -75,6 +75,9 @@ private:
     // Draws the opaque casters' moments into `target` (a raster framebuffer), inside `texels`.
     void rasterMoments(std::size_t light, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
                        const ShadowFrame& frame);
+    // blur_mips.comp: level 0 blurred from raw inside reached[0], and levels 1-4 inside reached[1-4]
+    // from it, in one dispatch. Returns how many levels it made (at most 5).
+    int blurAndMipInCompute(std::size_t light, std::size_t face, const std::vector<TexelRect>& reached);
     // Converts face `face`'s 4x multisampled depth into `target`'s moments, inside `texels`.
     void convertMultisampled(std::size_t light, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
                              const ShadowFrame& frame);
@@ -82,7 +85,7 @@ private:
     std::string name_;
     Warp warp_;
     int blurRadius_ = 2;
-    bool fp16_ = false, mipmaps_ = true, msaa_ = false, halfResolution_ = true;
+    bool fp16_ = false, mipmaps_ = true, msaa_ = false, halfResolution_ = true, computeBlur_ = false;
     enum BlurKernel { kBlurGaussian = 0, kBlurBox = 1 };
     int blurKernel_ = kBlurGaussian;
     // The blur radius, half resolution and kernel the programs were built with.
@@ -95,6 +98,8 @@ private:
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_, downsample_;  // toMoments_: MSAA's conversion
+    gl::Program blurMips_;  // blur_mips.comp, for the moments' format blurMipsFormat_ (built when first used)
+    GLenum blurMipsFormat_ = 0;
     std::optional<CasterProgramPair> casterMoments_;
     int blurTaps_ = 0;  // taps each side, in moment texels (the programs' BLUR_RADIUS)
     gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
