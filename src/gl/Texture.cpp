@@ -86,6 +86,14 @@ Texture Texture::view2D(const Texture& source, GLenum format, int layer, int lev
     return Texture(GL_TEXTURE_2D, id, width, height, 0);
 }
 
+Texture Texture::viewLayers(const Texture& source, GLenum format, int layers, int level) {
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glTextureView(id, GL_TEXTURE_2D_ARRAY, source.id(), format, static_cast<GLuint>(level), 1, 0, static_cast<GLuint>(layers));
+    const int width = std::max(1, source.width() >> level), height = std::max(1, source.height() >> level);
+    return Texture(GL_TEXTURE_2D_ARRAY, id, width, height, 0);
+}
+
 Texture Texture::adopt(GLenum target, GLuint id, int w, int h, std::size_t bytes) { return Texture(target, id, w, h, bytes); }
 
 void Texture::setFilter(GLenum minFilter, GLenum magFilter) {

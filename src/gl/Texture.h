@@ -18,6 +18,9 @@ public:
     // write one face, or read one level while writing the next (no feedback loop: the view holds
     // only the level it reads).
     static Texture view2D(const Texture& source, GLenum format, int layer, int level = 0);
+    // A 2D-array view of `layers` layers (cube faces) of one mip level of `source`, for passes that
+    // read every face of a level at once.
+    static Texture viewLayers(const Texture& source, GLenum format, int layers, int level);
     // Takes ownership of a texture made elsewhere (3D textures, views).
     static Texture adopt(GLenum target, GLuint id, int width, int height, std::size_t bytes);
 

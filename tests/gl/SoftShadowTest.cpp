@@ -373,7 +373,9 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
     // 1280 x 720: 2,813 pixels over 1/255 apart, at most 144/255, in its noisy penumbrae; fp16 here:
     // 72 of 9,216 over 1/1000): their maps are compared, not their pictures.
     const bool fp16 = technique.find("fp16=true") != std::string::npos;
-    if (technique != "msm" && !fp16) EXPECT_EQ(differingPixels(expected, compute.readLinear(), 1e-3f), 0u) << technique;
+    if (technique != "msm" && !fp16) {
+        EXPECT_EQ(differingPixels(expected, compute.readLinear(), 1e-3f), 0u) << technique;
+    }
     // The fragment passes' bilinear fetches weigh texels to ~1e-5 on llvmpipe (the exponential
     // warps' worst texels, measured: 1.2e-5), the compute pass in floats; half floats round to 2^-11.
     const float relative = fp16 ? 2e-3f : 3e-5f;

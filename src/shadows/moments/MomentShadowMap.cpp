@@ -40,7 +40,10 @@ void MomentShadowMap::buildPrograms() {
                        : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
                                    : "src/shadows/moments/blur.frag";
     blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = defines});
-    downsample_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/downsample.frag"});
+    layeredMips_ = epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array");
+    downsample_ = gl::Program::build({.vertex = "src/shadows/moments/downsample.vert",
+                                      .fragment = "src/shadows/moments/downsample.frag",
+                                      .defines = {std::string("LAYERED ") + (layeredMips_ ? "1" : "0")}});
     const gl::ProgramDesc caster{.vertex = "src/shadows/common/glsl/caster.vert",
                                  .fragment = "src/shadows/moments/caster_moments.frag",
                                  .defines = lookupDefines()};
@@ -156,12 +159,16 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
             const auto face = static_cast<std::size_t>(f);
             m.levelTargets[face].push_back(gl::Framebuffer::colourOnly(m.moments, m.cube ? f : -1, "moment map", level));
             m.levelViews[face].push_back(gl::Texture::view2D(m.moments, m.format, f, level));
-            m.levelViews[face].back().setFilter(GL_LINEAR, GL_LINEAR);  // downsample.frag's fetch
-            m.levelViews[face].back().setWrap(GL_CLAMP_TO_EDGE);
         }
         // Level 0 takes the casters' raster without a blur: the moments' depth buffer goes with it.
         m.levelTargets[static_cast<std::size_t>(f)][0].attach(GL_DEPTH_ATTACHMENT, m.rasterDepth);
         m.levelTargets[static_cast<std::size_t>(f)][0].checkComplete("moment map with its depth buffer");
+    }
+    for (int level = 0; level < levels; ++level) {
+        m.levelLayersTargets.push_back(gl::Framebuffer::colourOnly(m.moments, -1, "moment map level", level));
+        m.levelLayers.push_back(gl::Texture::viewLayers(m.moments, m.format, faces, level));
+        m.levelLayers.back().setFilter(GL_LINEAR, GL_LINEAR);  // downsample.frag's fetch
+        m.levelLayers.back().setWrap(GL_CLAMP_TO_EDGE);
     }
     m.derived.assign(static_cast<std::size_t>(faces), DerivedTexels{});
 }
@@ -317,7 +324,8 @@ int MomentShadowMap::blurAndMipInCompute(std::size_t i, std::size_t face, const 
     return made;
 }
 
-void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& changed, const ShadowFrame& frame) {
+MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& changed,
+                                                    const ShadowFrame& frame) {
     LightMoments& m = moments_[i];
     // `changed`: moment texels whose unblurred moments changed. The blur spreads that by its taps:
     // in one pass (radius 1, blur_bilinear.frag) by as much in x and y; in two, the y pass reads
@@ -351,20 +359,22 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
         }
         glEnable(GL_SCISSOR_TEST);  // clearColourIn's scope ends it
     };
-    // Per level, the texels made again and those of them a caster reaches.
-    std::vector<TexelRect> levelRect{blurred}, levelReached{reached};
+    FaceLevels levels{{blurred}, {reached}, 1};
     for (int l = 1; l < m.levels; ++l) {
         const int size = std::max(1, m.resolution >> l);
-        levelRect.push_back(coarser(levelRect.back(), 2, size));
-        levelReached.push_back(intersection(levelRect.back(), coarser(levelReached.back(), 2, size)));
+        levels.rect.push_back(coarser(levels.rect.back(), 2, size));
+        levels.reached.push_back(intersection(levels.rect.back(), coarser(levels.reached.back(), 2, size)));
     }
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     glViewport(0, 0, m.resolution, m.resolution);
     fullscreenVao_.bind();
     if (blurTaps_ > 0) clearOutside(m.levelTargets[face][0], blurred, reached);
-    int made = 1;  // levels made by the blur's pass
     if (blurTaps_ > 0 && !isEmpty(reached) && computeBlur_ && onePass) {
-        made = blurAndMipInCompute(i, face, levelReached);
+        levels.made = blurAndMipInCompute(i, face, levels.reached);
+        for (int l = 1; l < levels.made; ++l) {  // the rest of the rectangle of each level it made
+            const auto level = static_cast<std::size_t>(l);
+            clearOutside(m.levelTargets[face][level], levels.rect[level], levels.reached[level]);
+        }
     } else if (blurTaps_ > 0 && !isEmpty(reached)) {
         blur_.use();
         if (onePass) {  // raw -> map, x and y at once
@@ -389,19 +399,46 @@ void MomentShadowMap::update(std::size_t i, std::size_t face, const TexelRect& c
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
     }
+    glDisable(GL_SCISSOR_TEST);
+    return levels;
+}
+
+void MomentShadowMap::makeMipLevels(std::size_t i, const std::vector<FaceLevels>& faces) {
+    const LightMoments& m = moments_[i];
+    const int faceCount = static_cast<int>(faces.size());
+    const gl::ScopedPassState state(gl::PassState::fullscreen());
+    glDisable(GL_SCISSOR_TEST);  // each face's quad covers its rectangle alone
+    fullscreenVao_.bind();
     downsample_.use();
+    downsample_.set("uFar", farMoments());
     for (int l = 1; l < m.levels; ++l) {
         const auto level = static_cast<std::size_t>(l);
-        glViewport(0, 0, std::max(1, m.resolution >> l), std::max(1, m.resolution >> l));
-        const gl::Framebuffer& target = m.levelTargets[face][level];
-        clearOutside(target, levelRect[level], levelReached[level]);
-        if (l < made || isEmpty(levelReached[level])) continue;
-        target.bind();
-        m.levelViews[face][level - 1].bind(0);
-        scissor(levelReached[level]);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        bool any = false;
+        for (int f = 0; f < faceCount; ++f) {
+            const FaceLevels& face = faces[static_cast<std::size_t>(f)];
+            const bool redo = l >= face.made && level < face.rect.size();
+            any = any || (redo && !isEmpty(face.rect[level]));
+            const std::string at = "[" + std::to_string(f) + "]";
+            downsample_.set(("uRects" + at).c_str(), redo ? face.rect[level] : TexelRect(0));
+            downsample_.set(("uReached" + at).c_str(), redo ? face.reached[level] : TexelRect(0));
+        }
+        if (!any) continue;
+        const int size = std::max(1, m.resolution >> l);
+        glViewport(0, 0, size, size);
+        downsample_.set("uLevelSize", glm::vec2(static_cast<float>(size)));
+        m.levelLayers[level - 1].bind(0);
+        if (layeredMips_) {
+            m.levelLayersTargets[level].bind();
+            downsample_.set("uFirstFace", 0);
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, faceCount);
+        } else {
+            for (int f = 0; f < faceCount; ++f) {
+                m.levelTargets[static_cast<std::size_t>(f)][level].bind();
+                downsample_.set("uFirstFace", f);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 1);
+            }
+        }
     }
-    glDisable(GL_SCISSOR_TEST);
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
@@ -412,10 +449,12 @@ void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
         if (!maps_.slots().shadowed(i)) continue;
         ensure(i, maps_.maps(i));
         LightMoments& m = moments_[i];
+        std::vector<FaceLevels> faces(m.levelTargets.size(), FaceLevels{{}, {}, m.levels});  // unchanged: nothing to redo
         for (std::size_t f = 0; f < m.levelTargets.size(); ++f) {
             const TexelRect changed = changedTexels(i, f, frame);
-            if (!isEmpty(changed)) update(i, f, changed, frame);
+            if (!isEmpty(changed)) faces[f] = update(i, f, changed, frame);
         }
+        makeMipLevels(i, faces);
         if (m.levels > 1) glTextureParameterf(m.moments.id(), GL_TEXTURE_MAX_ANISOTROPY, static_cast<float>(anisotropy_));
     }
 }

@@ -51,9 +51,13 @@ private:
         // 2D: the unblurred moments of one face, and those blurred along x (made for radii over 1)
         gl::Texture raw, scratch;
         // Per face, per mip level: a render target (level 0's with rasterDepth), and a view of the
-        // level alone (mip input).
+        // level alone (compute_blur's images).
         std::vector<std::vector<gl::Framebuffer>> levelTargets;
         std::vector<std::vector<gl::Texture>> levelViews;
+        // Per mip level: every face at once, as a render target (layered for a cube map) and a
+        // 2D-array view (the next level's input).
+        std::vector<gl::Framebuffer> levelLayersTargets;
+        std::vector<gl::Texture> levelLayers;
         std::vector<DerivedTexels> derived;  // per face: what the moments were made from
         gl::Framebuffer rawTarget, scratchTarget;  // rawTarget: raw with rasterDepth
         gl::Texture rasterDepth;  // the casters' own raster (not with MSAA), at the moments' resolution
@@ -67,8 +71,17 @@ private:
     // The moment texels of face `face` that must be made again this frame (all of them when
     // nothing was kept).
     TexelRect changedTexels(std::size_t light, std::size_t face, const ShadowFrame& frame);
-    // Makes the moments (and their mip levels) of `texels` of face `face` again.
-    void update(std::size_t light, std::size_t face, const TexelRect& texels, const ShadowFrame& frame);
+    // Per mip level of one face: the texels made again, and those of them a caster reaches; and
+    // how many levels (from 0) are made already.
+    struct FaceLevels {
+        std::vector<TexelRect> rect, reached;
+        int made = 0;
+    };
+    // Makes the moments of `texels` of face `face` again: level 0, and with compute_blur levels 1-4.
+    // Returns what the mip levels below must redo.
+    FaceLevels update(std::size_t light, std::size_t face, const TexelRect& texels, const ShadowFrame& frame);
+    // Makes each mip level below those made of every face in one draw (downsample.vert).
+    void makeMipLevels(std::size_t light, const std::vector<FaceLevels>& faces);
     void buildPrograms();
     // The moments where no caster is (depth 1), as moments.glsl's momentsOf(1) gives them.
     glm::vec4 farMoments() const;
@@ -98,6 +111,9 @@ private:
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_, downsample_;  // toMoments_: MSAA's conversion
+    // downsample_ writes gl_Layer from its vertex shader (GL_ARB_shader_viewport_layer_array): one
+    // draw per level for all six faces of a cube; without it, one per face.
+    bool layeredMips_ = false;
     gl::Program blurMips_;  // blur_mips.comp, for the moments' format blurMipsFormat_ (built when first used)
     GLenum blurMipsFormat_ = 0;
     std::optional<CasterProgramPair> casterMoments_;
