@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
             }
         },
         "comma-separated techniques, or all (default: the scene's own); each may name parameters of its own, "
-        "technique:name=value[:name=value...], e.g. vsm,vsm:blur_kernel=box");
+        "technique:name=value[:name=value...], e.g. vsm,vsm:blur_kernel=gaussian");
     benchCmd->add_option_function<std::string>(
         "--shadow-res",
         [&bench](const std::string& list) {

@@ -8,7 +8,7 @@ file(READ "${OUT}/bench.json" doc)
 expect_json("${doc}" 4 LENGTH cases)  # 2 variants x 2 rounds
 expect_json("${doc}" "vsm" cases 0 label)
 expect_json("${doc}" "vsm blur_kernel=box mipmaps=false" cases 1 label)
-expect_json("${doc}" "gaussian" cases 0 parameters blur_kernel)
+expect_json("${doc}" "auto" cases 0 parameters blur_kernel)
 expect_json("${doc}" "box" cases 1 parameters blur_kernel)
 expect_json("${doc}" "false" cases 1 parameters mipmaps)
 if(NOT out MATCHES "vsm blur_kernel=box mipmaps=fa[^\n]*x vsm")

@@ -183,8 +183,8 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapWithAnimatedGlass) {
 
 // cssm2 with white ξ draws new noise every frame (seeded by the frame index): never kept. A wide
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
-INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16", "vsm:blur_kernel=box",
-                                                                  "vsm:compute_blur=true", "vsm:blur_kernel=box:compute_blur=true",
+INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16", "vsm:blur_kernel=gaussian",
+                                                                  "vsm:compute_blur=true", "vsm:blur_kernel=gaussian:compute_blur=true",
                                                                   "cascaded", "cascaded:fit_receivers=false", "lispsm", "psm"));
 
 // A map drawn whole every frame makes no tile bounds (the bounds' pass cost llvmpipe more than the

@@ -14,8 +14,8 @@ namespace penumbra::shadows {
 
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
 // moments are drawn straight into a map of their own resolution with its own depth buffer
-// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred with
-// a Gaussian and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
+// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a 2 x 2
+// box by default, or a Gaussian) and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
 // translucent casters comes from the shared tint map, whose opaque depth is drawn only under the
 // translucent casters, as its depth test (DepthAndTintMaps::kEveryLight): nothing here reads it.
 // While the still casters and the light stay put, only the rectangle the animated casters cover
@@ -99,12 +99,15 @@ private:
     Warp warp_;
     int blurRadius_ = 2;
     bool fp16_ = false, mipmaps_ = true, msaa_ = false, halfResolution_ = true, computeBlur_ = false;
-    enum BlurKernel { kBlurGaussian = 0, kBlurBox = 1 };
-    int blurKernel_ = kBlurGaussian;
+    enum BlurKernel { kBlurAuto = 0, kBlurGaussian = 1, kBlurBox = 2 };
+    int blurKernel_ = kBlurAuto;
+    // Whether blur_box.frag serves `radius` at that resolution with that kernel: asked for, or
+    // `auto` where the Gaussian spans one moment texel each side (sigma 1/2 texel, the box's variance).
+    static bool boxKernel(int radius, bool halfResolution, int kernel);
     // The blur radius, half resolution and kernel the programs were built with.
     std::tuple<int, bool, int> built_{-1, false, -1};
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
-    bool boxBlur() const { return std::get<2>(built_) == kBlurBox && std::get<0>(built_) > 0; }
+    bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
