@@ -278,8 +278,9 @@ TEST(SoftShadows, VsmLightBleedingAndItsReduction) {
 // its shadow clear of it, seen from straight above at about one moment texel per pixel. The centroid of the
 // shadowed pixels (visibility < 0.5) stays within half a pixel of hard's (measured on llvmpipe:
 // vsm 0.30 and msm 0.36 with the box, their default; with the Gaussian 0.20 and 0.23; full-resolution
-// vsm, a Gaussian, 0.23). The box kernel averages the 2 x 2 texels past each one's centre and draws the casters half a texel the other
-// way to make up for it: without that shift the shadow moved by 1.1-1.2 pixels.
+// vsm, a Gaussian, 0.23). The box kernel averages the 2 x 2 texels past each one's centre and
+// draws the casters half a texel the other way to make up for it: without that shift the shadow
+// moved by 1.1-1.2 pixels.
 TEST(SoftShadows, MomentMapShadowsLieWhereHardsLie) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 40, 0.001], "target": [0, 0, 0], "up": [0, 0, -1], "fov_deg": 7 },

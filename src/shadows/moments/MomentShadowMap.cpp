@@ -71,10 +71,10 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
         Parameter::choice("blur_kernel", blurKernel_, {"auto", "gaussian", "box"},
                           "auto: the box where the Gaussian would span one moment texel each side (blur_radius 1-2 at half "
                           "resolution, the default), else the Gaussian; gaussian: the Gaussian blur_radius says (at the "
-                          "default three taps across, in four bilinear fetches); box: a 2 x 2 box of moment texels in one bilinear fetch whatever the radius (variance 1/4 "
-                          "texel^2 a side, sigma 1/2's; on llvmpipe the default scene's frame 0.87x with every map "
-                          "redrawn; against the reference wrong pixels within +0.02 points of the Gaussian's, RMSE within "
-                          "+-0.001)"),
+                          "default three taps across, in four bilinear fetches); box: a 2 x 2 box of moment texels in one "
+                          "bilinear fetch whatever the radius (variance 1/4 texel^2 a side, sigma 1/2's; on llvmpipe the "
+                          "default scene's frame 0.87x with every map redrawn; against the reference wrong pixels within "
+                          "+0.02 points of the Gaussian's, RMSE within +-0.001)"),
         Parameter::flag("fp16", fp16_, "half-float moments (RG16F / RGBA16F) instead of 32-bit; exponential warps then at most c = 10 (esm) or 5.54 (evsm), what half floats hold"),
         Parameter::flag("mipmaps", mipmaps_, "trilinear mipmaps of the moments"),
         Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
