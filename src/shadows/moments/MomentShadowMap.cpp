@@ -19,20 +19,26 @@ MomentShadowMap::MomentShadowMap(std::string name, Warp warp)
     buildPrograms();
 }
 
+// blur_radius is in texels of the light's map resolution (sigma = radius / 2 of them): at half
+// resolution the kernel spans half as many moment texels.
+int MomentShadowMap::gaussianTaps(int radius, bool halfResolution) {
+    return static_cast<int>(std::ceil(static_cast<float>(radius) / (halfResolution ? 2.0f : 1.0f)));
+}
+
 bool MomentShadowMap::boxKernel(int radius, bool halfResolution, int kernel) {
-    const int gaussianTaps = static_cast<int>(std::ceil(static_cast<float>(radius) / (halfResolution ? 2.0f : 1.0f)));
-    return radius > 0 && (kernel == kBlurBox || (kernel == kBlurAuto && gaussianTaps == 1));
+    return radius > 0 && (kernel == kBlurBox || (kernel == kBlurAuto && gaussianTaps(radius, halfResolution) == 1));
 }
 
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
 // moments.frag, blur.frag, blur_bilinear.frag): rebuilt when a parameter changes them.
 void MomentShadowMap::buildPrograms() {
-    // blur_radius is in texels of the light's map resolution (sigma = radius / 2 of them): at half
-    // resolution the kernel spans half as many moment texels.
-    const float scale = halfResolution_ ? 2.0f : 1.0f;
     const bool box = boxKernel(blurRadius_, halfResolution_, blurKernel_);
-    const int taps = box ? 1 : static_cast<int>(std::ceil(static_cast<float>(blurRadius_) / scale));
-    const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / scale, 0.5f);
+    const int taps = box ? 1 : gaussianTaps(blurRadius_, halfResolution_);
+    const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / (halfResolution_ ? 2.0f : 1.0f), 0.5f);
+    // blur_mips.comp's kernel on each axis over texels p - 1, p, p + 1: blur_box.frag's box (its
+    // raster shifted half a texel), or the radius-1 Gaussian's taps, as blur_bilinear.frag weighs them.
+    const float g = std::exp(-1.0f / (2.0f * sigma * sigma)), w = g / (1.0f + 2.0f * g);
+    blurWeights_ = box ? glm::vec3(0.0f, 0.5f, 0.5f) : glm::vec3(w, 1.0f - 2.0f * w, w);
     std::vector<std::string> defines = lookupDefines();
     defines.push_back("BLUR_RADIUS " + std::to_string(taps));
     defines.push_back("BLUR_SIGMA " + std::to_string(sigma));
@@ -302,15 +308,7 @@ int MomentShadowMap::blurAndMipInCompute(std::size_t i, std::size_t face, const 
         blurMipsFormat_ = m.format;
     }
     const int made = std::min(m.levels, kMostLevels);
-    // The kernel on each axis over texels p - 1, p, p + 1: blur_box.frag's box (its raster shifted
-    // half a texel), or blur_bilinear.frag's Gaussian.
-    glm::vec3 weights(0.0f, 0.5f, 0.5f);
-    if (!boxBlur()) {
-        const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / (halfResolution_ ? 2.0f : 1.0f), 0.5f);
-        const float g = std::exp(-1.0f / (2.0f * sigma * sigma)), w = g / (1.0f + 2.0f * g);
-        weights = {w, 1.0f - 2.0f * w, w};
-    }
-    blurMips_.set("uWeights", weights);
+    blurMips_.set("uWeights", blurWeights_);
     blurMips_.set("uLevels", made);
     for (int l = 0; l < kMostLevels; ++l) {
         const auto level = static_cast<std::size_t>(std::min(l, made - 1));  // units past `made` are never written
@@ -425,7 +423,7 @@ void MomentShadowMap::makeMipLevels(std::size_t i, const std::vector<FaceLevels>
         bool any = false;
         for (int f = 0; f < faceCount; ++f) {
             const FaceLevels& face = faces[static_cast<std::size_t>(f)];
-            const bool redo = l >= face.made && level < face.rect.size();
+            const bool redo = l >= face.made;  // a face left as it was has made every level
             any = any || (redo && !isEmpty(face.rect[level]));
             const std::string at = "[" + std::to_string(f) + "]";
             downsample_.set(("uRects" + at).c_str(), redo ? face.rect[level] : TexelRect(0));

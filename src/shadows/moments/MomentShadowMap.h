@@ -14,10 +14,11 @@ namespace penumbra::shadows {
 
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
 // moments are drawn straight into a map of their own resolution with its own depth buffer
-// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a 2 x 2
-// box by default, or a Gaussian) and optionally mip-mapped for trilinear/anisotropic filtering. Coloured tint from
-// translucent casters comes from the shared tint map, whose opaque depth is drawn only under the
-// translucent casters, as its depth test (DepthAndTintMaps::kEveryLight): nothing here reads it.
+// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a
+// 2 x 2 box by default, or a Gaussian) and optionally mip-mapped for trilinear/anisotropic
+// filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
+// depth is drawn only under the translucent casters, as its depth test
+// (DepthAndTintMaps::kEveryLight): nothing here reads it.
 // While the still casters and the light stay put, only the rectangle the animated casters cover
 // now or covered last frame is drawn, blurred and mip-mapped again, widened by the blur's reach.
 class MomentShadowMap final : public ShadowTechnique {
@@ -104,6 +105,8 @@ private:
     // Whether blur_box.frag serves `radius` at that resolution with that kernel: asked for, or
     // `auto` where the Gaussian spans one moment texel each side (sigma 1/2 texel, the box's variance).
     static bool boxKernel(int radius, bool halfResolution, int kernel);
+    // The Gaussian's taps each side, in moment texels, for a blur_radius at that resolution.
+    static int gaussianTaps(int radius, bool halfResolution);
     // The blur radius, half resolution and kernel the programs were built with.
     std::tuple<int, bool, int> built_{-1, false, -1};
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
@@ -121,6 +124,7 @@ private:
     GLenum blurMipsFormat_ = 0;
     std::optional<CasterProgramPair> casterMoments_;
     int blurTaps_ = 0;  // taps each side, in moment texels (the programs' BLUR_RADIUS)
+    glm::vec3 blurWeights_{0.0f};  // blur_mips.comp's kernel on each axis, of the programs' radius-1 kernel
     gl::VertexArray fullscreenVao_;  // attribute-less full-screen passes
 };
 

@@ -4,8 +4,8 @@
 // fetches 2w texels either side of the centre ([2w, 1 - 2w, 0] and [0, 1 - 2w, 2w]), so the 3 x 3
 // product is the mean of four at (±2w, ±2w). One pass and four fetches instead of blur.frag's two
 // passes of three. On llvmpipe (vsm, default scene, every map redrawn, six alternated rounds) the
-// frame took 0.943x (0.887-0.972), the shadow pass ~2 ms less
-// of ~21; linear sampling within each separable pass (Rákos 2010) had saved nothing there.
+// frame took 0.943x (0.887-0.972), the shadow pass ~2 ms less of ~21; linear sampling within each
+// separable pass (Rákos 2010) had saved nothing there.
 // Edges clamp, as blur.frag's do.
 layout(binding = 0) uniform sampler2D uSource;  // linear filtering, clamped to its edges
 layout(location = 0) out vec4 outValue;
