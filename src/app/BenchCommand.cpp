@@ -176,8 +176,8 @@ void printRoundRatios(const std::vector<bench::CaseResult>& results) {
     const auto rows = bench::roundRatios(results);
     if (rows.empty()) return;
     std::printf("in rounds (frame ms of each case, the median over its consecutive frame pairs, ÷ its scene's first case's in the "
-                "same round; median over the rounds; from 6 rounds, where the median lies with at least 95 %% confidence, "
-                "from the rounds' order statistics):\n");
+                "same round; median over the rounds; with 6 rounds or more, where the median lies with at least 95 %% "
+                "confidence, from the rounds' order statistics):\n");
     for (const auto& q : rows) {
         std::printf("  %-30.30s @%-14.14s %8.2f ms  %6.3fx %s  [", q.label.c_str(), q.sceneName.c_str(), q.medianFrameMs, q.medianRatio,
                     q.base.c_str());
