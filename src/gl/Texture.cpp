@@ -14,7 +14,7 @@ std::size_t bytesPerTexel(GLenum f) {
         case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_RG16F: case GL_R32F:
         case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8: return 4;
         case GL_RGB16F: return 6;
-        case GL_RGBA16F: case GL_RG32F: case GL_DEPTH32F_STENCIL8: return 8;
+        case GL_RGBA16F: case GL_RGBA16: case GL_RG32F: case GL_DEPTH32F_STENCIL8: return 8;
         case GL_RGB32F: return 12;
         case GL_RGBA32F: return 16;
         default: throw std::logic_error("bytesPerTexel: unknown format " + std::to_string(f));

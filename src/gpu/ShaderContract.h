@@ -10,6 +10,8 @@
 #include <glm/glm.hpp>
 // GPU_CONST declares an integer constant both languages read; GPU_NAMESPACE_* wrap C++ only.
 #define GPU_CONST inline constexpr int
+// GPU_CONSTANT(type) declares a constant of a GLSL type (vec4, mat4) both languages read.
+#define GPU_CONSTANT(type) inline const type
 #define GPU_NAMESPACE_BEGIN namespace penumbra::gpu {
 #define GPU_NAMESPACE_END }
 GPU_NAMESPACE_BEGIN
@@ -19,6 +21,7 @@ using ivec4 = glm::ivec4;
 GPU_NAMESPACE_END
 #else
 #define GPU_CONST const int
+#define GPU_CONSTANT(type) const type
 #define GPU_NAMESPACE_BEGIN
 #define GPU_NAMESPACE_END
 #endif

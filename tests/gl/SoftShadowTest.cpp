@@ -4,6 +4,7 @@
 
 #include "reference/Comparison.h"
 #include "render/Offscreen.h"
+#include "shadows/moments/MomentWarp.h"
 
 #include <map>
 
@@ -27,7 +28,8 @@ const char* kAreaLightScene = R"({
 // measured on llvmpipe at 256x192 with 2048^2 maps and default parameters (the moment maps since
 // their casters are drawn straight into moments, stop 68: vsm 1.131 -> 0.989, esm 1.598 -> 1.482,
 // evsm2 1.054 -> 0.910, evsm4 1.045 -> 0.928, msm 1.064 -> 1.044; with the box kernel as their
-// default, stop 69: vsm 1.003, esm 1.474, evsm2 0.903, evsm4 0.923, msm 1.009). Each bound is about
+// default, stop 69: vsm 1.003, esm 1.474, evsm2 0.903, evsm4 0.923, msm 1.009; msm's moments quantized
+// to 16 bits and its system solved through the Cholesky form, stop 70: 0.999). Each bound is about
 // 1.25x its measurement: a real regression (a lost shadow, a broken filter) moves these by whole
 // percent (no shadows: 2.41%), rounding differences between drivers by hundredths.
 const std::map<std::string, double> kMeasuredWrongPercent = {
@@ -35,7 +37,7 @@ const std::map<std::string, double> kMeasuredWrongPercent = {
     {"pcf-poisson16", 1.046}, {"pcf-poisson20", 1.052}, {"pcf-poisson32", 1.026}, {"pcf-random30", 1.024},
     {"pcf-jitter", 1.008},    {"pcf-dither", 1.052},    {"pcf-rotated", 1.045},   {"pcf-adaptive", 1.026},
     {"pcss", 0.550},          {"distance", 1.059},      {"vsm", 1.003},           {"esm", 1.474},
-    {"evsm2", 0.903},         {"evsm4", 0.923},         {"msm", 1.009},           {"cssm1", 0.912},
+    {"evsm2", 0.903},         {"evsm4", 0.923},         {"msm", 0.999},           {"cssm1", 0.912},
     {"cssm2", 0.908},         {"cascaded", 1.084},      {"lispsm", 1.084},        {"lispsm-tiled", 1.084},
     {"psm", 1.084},           {"shadow-volumes", 1.088}, {"planar", 1.084},
 };
@@ -307,6 +309,43 @@ TEST(SoftShadows, MomentMapShadowsLieWhereHardsLie) {
     }
 }
 
+// Inside an umbra a moment map's shadow is whole: a sphere and a box floating over a wide ground,
+// a sun, and every pixel hard shadows with its 7 x 7 neighbours at most 0.1 lit with every warp.
+// MSM solved its Hankel system through inverse(B), nearly singular where the moments come from one
+// depth, and the cofactors' cancellation in fp32 lit single pixels: 72 of this 4,422-pixel umbra
+// (96 with the quantized moments), and speckled the default scene's shadows of the cow and the
+// sphere (seen). Solved through B = L D L^T, none.
+TEST(SoftShadows, MomentMapUmbraeHaveNoLitSpeckles) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [4, 5, 7], "target": [0, 0.5, 0], "fov_deg": 40 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 2048 } } ],
+      "objects": [ { "shape": "plane", "size": [30, 30] },
+                   { "shape": "sphere", "radius": 0.6, "position": [-1.2, 1.2, 0] },
+                   { "shape": "box", "size": [1, 1, 1], "position": [1.2, 1.5, 0.5], "rotation_deg": [0, 30, 0] } ] })");
+    constexpr int kW = 320, kH = 240, kErode = 3;
+    const auto visibility = [&](const std::string& technique) {
+        auto o = optionsFor(technique);
+        o.output = render::OutputMode::Visibility;
+        return renderFrame(s, o, kW, kH);
+    };
+    const Frame hard = visibility("hard");
+    std::vector<std::pair<int, int>> umbra;
+    for (int y = kErode; y < kH - kErode; ++y)
+        for (int x = kErode; x < kW - kErode; ++x) {
+            bool inside = true;
+            for (int j = -kErode; j <= kErode && inside; ++j)
+                for (int i = -kErode; i <= kErode && inside; ++i) inside = hard.at(x + i, y + j).r < 0.5f;
+            if (inside) umbra.emplace_back(x, y);
+        }
+    ASSERT_GT(umbra.size(), 2000u) << "both shadows in view";
+    for (const char* technique : {"msm", "msm:quantized=false", "vsm", "esm", "evsm4"}) {
+        const Frame f = visibility(technique);
+        int lit = 0;
+        for (const auto& [x, y] : umbra) lit += f.at(x, y).r > 0.1f;
+        EXPECT_EQ(lit, 0) << technique << ": lit pixels inside the " << umbra.size() << "-pixel umbra";
+    }
+}
+
 // With nothing to cast a shadow on them, two lone boxes must be as lit as `none` leaves them,
 // whatever the filter. A spot and a point light whose range (8) ends a few metres behind them: the
 // receiver-plane bias extrapolates a face's depth to each tap by up to 0.01 of window depth, which
@@ -351,10 +390,7 @@ namespace {
 // pictures, which also show the point light's cube faces, to 1/1000. A sun, a spot and a point
 // light over a box, a sphere and a pane; moment maps of 256, 128 (spot) and 64 (point light) texels,
 // whose mip chains run past the compute pass's four levels.
-class MomentComputeBlur : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
-    scene::Scene s = sceneFromJson(R"({
+const char* kThreeLightsScene = R"({
       "camera": { "position": [0, 7, 6], "target": [0, 0, 0], "fov_deg": 50 },
       "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "intensity": 0.4, "shadow": { "resolution": 512 } },
                   { "type": "spot", "position": [3, 5, 2], "direction": [-0.6, -1, -0.4], "angle_deg": 60, "intensity": 0.4,
@@ -363,23 +399,31 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
       "objects": [ { "shape": "plane", "size": [12, 12] },
                    { "shape": "box", "position": [-1.5, 0.5, 0] },
                    { "shape": "sphere", "radius": 0.6, "position": [1.2, 1.4, 0.8] },
-                   { "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, -1.5], "material": { "transmission": [0.1, 0.9, 0.1] } } ] })");
+                   { "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, -1.5], "material": { "transmission": [0.1, 0.9, 0.1] } } ] })";
+
+class MomentComputeBlur : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
+    scene::Scene s = sceneFromJson(kThreeLightsScene);
     const std::string technique = GetParam();
     render::OffscreenTarget target(96, 96);
     render::Renderer fragment(s, optionsFor(technique)), compute(s, optionsFor(technique + ":compute_blur=true"));
     fragment.render(0.0f, s.camera, 96, 96, target.framebuffer());
     const std::vector<float> expected = fragment.readLinear();
     compute.render(0.0f, s.camera, 96, 96, target.framebuffer());
-    // MSM's reconstruction (Hamburger, Peters & Klein 2015) and half floats' variance (m2 - m1^2 of
-    // values 2^-11 apart) turn such differences into visible ones (msm on the default scene at
-    // 1280 x 720: 2,813 pixels over 1/255 apart, at most 144/255, in its noisy penumbrae; fp16 here:
-    // 72 of 9,216 over 1/1000): their maps are compared, not their pictures.
+    // Half floats' variance (m2 - m1^2 of values 2^-11 apart) and MSM's moments quantized to 16 bits
+    // turn the rounding of the two ways into visible differences (fp16 here: 72 of 9,216 pixels over
+    // 1/1000; quantized msm 19): their maps are compared, not their pictures. MSM's 32-bit moments
+    // give the same picture since its lookup solves through the Cholesky form (through inverse(B),
+    // the default scene at 1280 x 720 had 2,813 pixels over 1/255 apart).
     const bool fp16 = technique.find("fp16=true") != std::string::npos;
-    if (technique != "msm" && !fp16) {
+    const bool quantized = technique.rfind("msm", 0) == 0 && technique.find("quantized=false") == std::string::npos;
+    if (!fp16 && !quantized) {
         EXPECT_EQ(differingPixels(expected, compute.readLinear(), 1e-3f), 0u) << technique;
     }
     // The fragment passes' bilinear fetches weigh texels to ~1e-5 on llvmpipe (the exponential
-    // warps' worst texels, measured: 1.2e-5), the compute pass in floats; half floats round to 2^-11.
+    // warps' worst texels, measured: 1.2e-5), the compute pass in floats; 16 bits round to 1.5e-5 (quantized
+    // msm), half floats to 2^-11.
     const float relative = fp16 ? 2e-3f : 3e-5f;
     const auto a = fragment.technique().debugViews(), b = compute.technique().debugViews();
     ASSERT_EQ(a.size(), b.size());
@@ -396,8 +440,43 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
     EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
 }
 
-INSTANTIATE_TEST_SUITE_P(Warps, MomentComputeBlur, ::testing::Values("vsm", "vsm:blur_kernel=gaussian", "esm", "evsm4", "msm", "vsm:fp16=true"),
+INSTANTIATE_TEST_SUITE_P(Warps, MomentComputeBlur,
+                         ::testing::Values("vsm", "vsm:blur_kernel=gaussian", "esm", "evsm4", "msm", "msm:quantized=false", "vsm:fp16=true"),
                          [](const auto& info) { return testNameOf(info.param); });
+
+// MSM's moments through the optimized quantization (Peters & Klein 2015, section 4.3) into RGBA16
+// are the 32-bit float moments to 16 bits: every level of the sun's and the spot light's maps, mapped
+// back with kMomentsDequantize on the CPU, within 1e-4 of the float map's (measured: 1.8e-5 and 1.5e-5), texels
+// where no caster is (the CPU's farMoments) too; and the pictures, all three lights, to 1/255.
+TEST(MomentQuantization, SixteenBitsHoldTheFloatMoments) {
+    scene::Scene s = sceneFromJson(kThreeLightsScene);
+    render::OffscreenTarget target(96, 96);
+    render::Renderer quantized(s, optionsFor("msm")), full(s, optionsFor("msm:quantized=false"));
+    quantized.render(0.0f, s.camera, 96, 96, target.framebuffer());
+    const std::vector<float> pixels = quantized.readLinear();
+    full.render(0.0f, s.camera, 96, 96, target.framebuffer());
+    const std::size_t differing = differingPixels(full.readLinear(), pixels, 1.0f / 255.0f);
+    std::printf("pixels over 1/255 apart: %zu\n", differing);
+    EXPECT_EQ(differing, 0u);
+    const auto a = quantized.technique().debugViews(), b = full.technique().debugViews();
+    ASSERT_EQ(a.size(), b.size());
+    int momentMaps = 0;
+    for (std::size_t v = 0; v < a.size(); ++v) {
+        if (a[v].label.find("moments") == std::string::npos) continue;
+        ++momentMaps;
+        const std::vector<float> q = textureLevels(a[v]), f = textureLevels(b[v]);
+        ASSERT_EQ(q.size(), f.size()) << a[v].label;
+        float worst = 0.0f;
+        for (std::size_t i = 0; i + 3 < q.size(); i += 4) {
+            const glm::vec4 stored(q[i], q[i + 1], q[i + 2], q[i + 3]);
+            const glm::vec4 moments = gpu::kMomentsDequantize * (stored - gpu::kMomentsQuantizeOffset);
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(moments[c] - f[i + static_cast<std::size_t>(c)]));
+        }
+        std::printf("%s: worst moment error %.2g\n", a[v].label.c_str(), worst);
+        EXPECT_LT(worst, 1e-4f) << a[v].label;
+    }
+    EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
+}
 
 }  // namespace
 }  // namespace penumbra::test

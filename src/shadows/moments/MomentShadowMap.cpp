@@ -62,11 +62,11 @@ void MomentShadowMap::buildPrograms() {
     alphaTested.defines.emplace_back("ALPHA_TEST 1");
     casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
-    built_ = {blurRadius_, halfResolution_, blurKernel_};
+    built_ = {blurRadius_, halfResolution_, blurKernel_, quantized()};
 }
 
 std::vector<std::string> MomentShadowMap::lookupDefines() const {
-    return {"MOMENT_WARP " + std::to_string(static_cast<int>(warp_))};
+    return {"MOMENT_WARP " + std::to_string(static_cast<int>(warp_)), std::string("MOMENTS_QUANTIZED ") + (quantized() ? "1" : "0")};
 }
 
 std::vector<Parameter> MomentShadowMap::declareParameters() {
@@ -104,7 +104,12 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
         p.push_back(Parameter::real("exponent", positiveExponent_, 1.0f, 88.0f, "positive warp exponent c+"));
     if (warp_ == Warp::ExponentialVariance4)
         p.push_back(Parameter::real("negative_exponent", negativeExponent_, 1.0f, 40.0f, "negative warp exponent c-"));
-    if (warp_ == Warp::Moments4) p.push_back(Parameter::real("moment_bias", momentBias_, 0.0f, 1e-2f, "moment bias alpha (Peters & Klein)"));
+    if (warp_ == Warp::Moments4) {
+        p.push_back(Parameter::real("moment_bias", momentBias_, 0.0f, 1e-2f, "moment bias alpha (Peters & Klein)"));
+        p.push_back(Parameter::flag("quantized", quantized_,
+                                    "64 bits a texel: the four moments through Peters & Klein's optimized quantization "
+                                    "(2015, section 4.3) into RGBA16 instead of RGBA32F (fp16 then has no effect)"));
+    }
     return p;
 }
 
@@ -114,7 +119,7 @@ GLenum MomentShadowMap::format() const {
         case Warp::Variance: return half ? GL_RG16F : GL_RG32F;
         case Warp::Exponential: return half ? GL_R16F : GL_R32F;
         case Warp::ExponentialVariance2: return half ? GL_RG16F : GL_RG32F;
-        default: return half ? GL_RGBA16F : GL_RGBA32F;
+        default: return quantized() ? GL_RGBA16 : half ? GL_RGBA16F : GL_RGBA32F;
     }
 }
 
@@ -225,7 +230,8 @@ glm::vec4 MomentShadowMap::farMoments() const {
             const float p = std::exp(c.x), n = -std::exp(-c.y);
             return {p, p * p, n, n * n};
         }
-        case Warp::Moments4: return glm::vec4(1.0f);
+        case Warp::Moments4:
+            return quantized() ? gpu::kMomentsQuantize * glm::vec4(1.0f) + gpu::kMomentsQuantizeOffset : glm::vec4(1.0f);
     }
     return glm::vec4(1.0f);
 }
@@ -295,6 +301,7 @@ static const char* imageFormatQualifier(GLenum format) {
         case GL_R16F: return "r16f";
         case GL_RG16F: return "rg16f";
         case GL_RGBA16F: return "rgba16f";
+        case GL_RGBA16: return "rgba16";
         default: return "rgba32f";
     }
 }
@@ -449,7 +456,7 @@ void MomentShadowMap::makeMipLevels(std::size_t i, const std::vector<FaceLevels>
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
-    if (built_ != std::tuple{blurRadius_, halfResolution_, blurKernel_}) buildPrograms();
+    if (built_ != std::tuple{blurRadius_, halfResolution_, blurKernel_, quantized()}) buildPrograms();
     maps_.render(frame, DepthAndTintMaps::kEveryLight);  // the moments do not read the depth: the tint's test alone
     gl::DebugGroup group("moments");
     for (std::size_t i = 0; i < maps_.slots().size(); ++i) {

@@ -107,8 +107,11 @@ private:
     static bool boxKernel(int radius, bool halfResolution, int kernel);
     // The Gaussian's taps each side, in moment texels, for a blur_radius at that resolution.
     static int gaussianTaps(int radius, bool halfResolution);
-    // The blur radius, half resolution and kernel the programs were built with.
-    std::tuple<int, bool, int> built_{-1, false, -1};
+    // MSM's moments through the optimized quantization into RGBA16 (MomentWarp.h).
+    bool quantized_ = true;
+    bool quantized() const { return warp_ == Warp::Moments4 && quantized_; }
+    // The blur radius, half resolution, kernel and quantization the programs were built with.
+    std::tuple<int, bool, int, bool> built_{-1, false, -1, false};
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
     bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)

@@ -21,15 +21,25 @@ float chebyshev(vec2 m, float t, float minVariance) {
 }
 
 // Hamburger 4MSM (Peters & Klein 2015, algorithm 2): the shadow intensity bound from four
-// moments of depth in [0, 1].
+// moments of depth in [0, 1]. The Hankel system B c = (1, zf, zf^2) is solved through B = L D L^T
+// (the paper's Cholesky form), not inverse(B): where the moments come from one depth B is nearly
+// singular, and the cofactors' cancellation in fp32 speckled the inside of shadows with lit pixels.
 float momentShadowIntensity(vec4 b, float zf) {
     b = mix(b, vec4(0.5), uMomentBias);
-    mat3 B = mat3(1.0, b.x, b.y, b.x, b.y, b.z, b.y, b.z, b.w);
-    vec3 c = inverse(B) * vec3(1.0, zf, zf * zf);
-    float disc = max(c.y * c.y - 4.0 * c.z * c.x, 0.0);
-    float r = sqrt(disc);
-    float z2 = (-c.y - r) / (2.0 * c.z), z3 = (-c.y + r) / (2.0 * c.z);
-    if (z2 > z3) { float tmp = z2; z2 = z3; z3 = tmp; }
+    float d22 = b.y - b.x * b.x;                       // D22 = b2 - b1^2, the variance
+    float l32 = (b.z - b.x * b.y) / d22;               // L32 = (b3 - b1 b2) / D22
+    float d33 = b.w - b.y * b.y - l32 * l32 * d22;     // D33 = b4 - b2^2 - L32^2 D22
+    // Forward substitution (L y = rhs), the diagonal, back substitution (L^T c = y).
+    vec3 c = vec3(1.0, zf - b.x, 0.0);
+    c.z = zf * zf - b.y - l32 * c.y;
+    c.y /= d22;
+    c.z /= d33;
+    c.y -= l32 * c.z;
+    c.x -= dot(c.yz, b.xy);
+    // The roots z2 <= z3 of c.x + c.y z + c.z z^2 (c.z > 0: B is positive definite).
+    float p = c.y / c.z, q = c.x / c.z;
+    float r = sqrt(max(0.25 * p * p - q, 0.0));
+    float z2 = -0.5 * p - r, z3 = -0.5 * p + r;
     if (zf <= z2) return 0.0;
     if (zf <= z3) return clamp((zf * z3 - b.x * (zf + z3) + b.y) / ((z3 - z2) * (zf - z2)), 0.0, 1.0);
     return clamp(1.0 - (z2 * z3 - b.x * (z2 + z3) + b.y) / ((zf - z2) * (zf - z3)), 0.0, 1.0);
@@ -56,6 +66,9 @@ vec3 shadowVisibility(int light, vec3 P, vec3 N, float NdotL) {
             lit = min(lit, chebyshev(m.zw, n, uMinVariance * pow(uExponents.y * n, 2.0)));
         }
     } else {
+#if MOMENTS_QUANTIZED
+        m = kMomentsDequantize * (m - kMomentsQuantizeOffset);
+#endif
         lit = 1.0 - momentShadowIntensity(m, t);
     }
     return lit * plainMapTint(s, NdotL);

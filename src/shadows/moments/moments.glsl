@@ -21,6 +21,11 @@ vec4 momentsOf(float z) {
         float p = exp(uExponents.x * x), n = -exp(-uExponents.y * x);
         return vec4(p, p * p, n, n * n);
     }
-    return vec4(t, t * t, t * t * t, t * t * t * t);
+    vec4 b = vec4(t, t * t, t * t * t, t * t * t * t);
+#if MOMENTS_QUANTIZED
+    return kMomentsQuantize * b + kMomentsQuantizeOffset;
+#else
+    return b;
+#endif
 }
 
