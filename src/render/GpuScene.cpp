@@ -31,6 +31,7 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         g.closedParts.assign(mesh.parts.size(), false);
         g.flatOrConvexParts.assign(mesh.parts.size(), false);
         g.faceNormalParts.assign(mesh.parts.size(), false);
+        g.planes.assign(mesh.parts.size(), std::nullopt);
         meshes_.push_back(std::move(g));
     }
     // Each mesh once, however many objects draw it, and none that no object draws.
@@ -40,9 +41,11 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         if (judged[meshIndex]) continue;
         judged[meshIndex] = true;
         meshes_[meshIndex].closedParts = scene.meshes[meshIndex].closedParts();
+        meshes_[meshIndex].planes.assign(scene.meshes[meshIndex].parts.size(), std::nullopt);
         for (std::size_t p = 0; p < scene.meshes[meshIndex].parts.size(); ++p) {
+            if (!meshes_[meshIndex].closedParts[p]) meshes_[meshIndex].planes[p] = scene.meshes[meshIndex].partPlane(p);
             meshes_[meshIndex].flatOrConvexParts[p] = meshes_[meshIndex].closedParts[p] ? scene.meshes[meshIndex].partIsConvex(p)
-                                                                                        : scene.meshes[meshIndex].partIsFlat(p);
+                                                                                        : meshes_[meshIndex].planes[p].has_value();
             meshes_[meshIndex].faceNormalParts[p] = meshes_[meshIndex].flatOrConvexParts[p] && scene.meshes[meshIndex].partHasFaceNormals(p);
         }
     }
@@ -74,6 +77,7 @@ std::vector<Draw> GpuScene::draws(float time, const glm::vec3& eye) const {
             d.solid = g.closedParts[p] && mat.alphaCutoff <= 0.0f && glm::determinant(glm::mat3(model)) > 0.0f;
             d.ownLayersKnown = g.flatOrConvexParts[p] && (!g.closedParts[p] || mat.diffuseTexture < 0);
             d.selfShadowFree = g.flatOrConvexParts[p] && (!g.closedParts[p] || (d.solid && g.faceNormalParts[p]));
+            d.plane = g.planes[p];
             // Painter's order by the object's centre (as Mátl 2013 did); sorted-triangles sorts within each object.
             d.viewDepth = glm::length(glm::vec3(model * glm::vec4(mesh.bounds.center(), 1.0f)) - eye);
             d.worldBounds = mesh.bounds.transformed(model);

@@ -7,6 +7,7 @@
 #include "render/MeshClusters.h"
 #include "scene/Scene.h"
 
+#include <optional>
 #include <vector>
 
 namespace penumbra::render {
@@ -39,6 +40,9 @@ struct Draw {
     // light from a face turned to it leaves the solid for good, and a face turned away has N.L <= 0.
     // The solid's case holds seen from outside only (its inner faces lit through it otherwise).
     bool selfShadowFree = false;
+    // A flat part that bounds no solid: its plane (unit normal, offset) in the mesh's space, under
+    // `model` (Renderer::lightsShadowingNothing).
+    std::optional<glm::vec4> plane;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)
     std::size_t triangles = 0;
@@ -84,6 +88,8 @@ private:
         std::vector<bool> flatOrConvexParts;
         // Per part: its vertex normals are its faces' (Mesh::partHasFaceNormals).
         std::vector<bool> faceNormalParts;
+        // Per part: the plane of a flat part that bounds no solid (Mesh::partPlane).
+        std::vector<std::optional<glm::vec4>> planes;
     };
     const scene::Scene& scene_;
     std::vector<GpuMesh> meshes_;

@@ -248,10 +248,13 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return boxes;
         };
         shadowTriangles_.assign(scene_.lights.size(), 0);
-        const auto selected = [](const Draw& d, const shadows::CasterSelection& selection) {
+        const std::vector<std::uint32_t> shadowsNothing = lightsShadowingNothing(draws, block);
+        const auto selected = [&](const Draw& d, const shadows::CasterSelection& selection) {
             using shadows::Motion;
+            const auto index = static_cast<std::size_t>(&d - draws.data());  // d is one of draws
             return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
                    (selection.motion == Motion::Any || d.moving == (selection.motion == Motion::Moving)) &&
+                   !(selection.light >= 0 && (shadowsNothing[index] >> selection.light & 1u)) &&
                    !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
         };
         frame.casterBounds = [&](const shadows::CasterSelection& selection) {
@@ -864,6 +867,41 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
             reach.lights.push_back({1u << static_cast<unsigned>(l), std::move(rects)});
         }
     }
+}
+
+std::vector<std::uint32_t> Renderer::lightsShadowingNothing(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
+    std::vector<std::uint32_t> nothing(draws.size(), 0u);
+    const float reach = technique_->shadowReachTexels(), depthReach = technique_->shadowReachDepth();
+    if (!options_.onlyCastersThatShadow || reach < 0.0f) return nothing;
+    for (std::size_t c = 0; c < draws.size(); ++c) {
+        const Draw& d = draws[c];
+        // A solid's inner faces, seen from inside, are lit through it: only flat parts qualify.
+        if (!d.castsShadow || d.translucent || !d.selfShadowFree || d.solid) continue;
+        const OrientedBox caster(d.meshBounds, d.model);
+        // Its plane in the world (planes map by the inverse transpose); Mesh::partPlane's flatness
+        // tolerance (1e-4 of the part's size) lies within flatCasterShadowsNone's surface tolerance.
+        std::optional<glm::vec4> plane;
+        if (d.plane) plane = glm::transpose(glm::inverse(d.model)) * *d.plane;
+        for (int l = 0; l < block.count.x; ++l) {
+            const gpu::LightData& light = block.lights[l];
+            if (light.cone.w < 0.0f) continue;  // no map
+            const float pad = reach + light.shadow.z + 2.0f;  // as addShadowReach's
+            const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
+            const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
+            bool shadows = false;
+            for (std::size_t r = 0; r < draws.size() && !shadows; ++r) {
+                if (r == c) continue;
+                const OrientedBox receiver(draws[r].meshBounds, draws[r].model);
+                // (An offset that pulls the caster's depths towards the light voids the plane's side.)
+                if (plane && opaqueReach >= 0.0f && flatCasterShadowsNone(light, *plane, receiver, pad, opaqueReach)) continue;
+                shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)
+                                                : shadowFootprint(light, caster, receiver, pad))
+                               .empty();
+            }
+            if (!shadows) nothing[c] |= 1u << static_cast<unsigned>(l);
+        }
+    }
+    return nothing;
 }
 
 // Where no other caster's shadow volume reaches an opaque receiver, a light's map holds the

@@ -393,6 +393,25 @@ TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& cas
     return footprintSides(light, caster, receiver, padTexels, tolerance, 0.0f, notBehind, notInFront);
 }
 
+bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, const OrientedBox& receiver, float padTexels,
+                           float depthReach) {
+    if (static_cast<int>(light.colorType.w) != gpu::kLightDirectional || receiver.empty) return false;
+    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
+    glm::vec3 n(plane);
+    float offset = plane.w;
+    const float length = glm::length(n);
+    if (length <= 0.0f) return false;
+    n /= length;
+    offset /= length;
+    const float facing = -glm::dot(n, d);  // cos t, on the normal's side
+    if (std::abs(facing) < 1e-3f) return false;  // edge-on to the light: neither side is clearly lit
+    if (facing < 0.0f) n = -n, offset = -offset;
+    const float range = light.directionFar.w - light.positionNear.w;
+    const float margin = 2.0f * padTexels * light.shadow.w + std::max(depthReach, 0.0f) * range + range / 4096.0f;
+    return std::all_of(receiver.corners.begin(), receiver.corners.end(),
+                       [&](const glm::vec3& c) { return glm::dot(n, c) + offset > margin; });
+}
+
 scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
                                     float depthReach) {
     return footprintSides(light, caster, receiver, padTexels, SideTolerance::Surface, depthReach, false, true).notInFront;

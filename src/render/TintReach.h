@@ -76,6 +76,15 @@ inline scene::Bounds shadowFootprint(const gpu::LightData& light, const Oriented
 // caster wholly behind a receiver's point puts nothing in front of it in the map. `depthReach`:
 // how much deeper than its receiver's biased depth a lookup may compare, in window depth
 // (ShadowTechnique::shadowReachDepth: the receiver-plane taps' clamp).
+// Whether a flat opaque caster in `plane` (world; unit normal, offset) leaves every point of
+// `receiver` lit under a directional light: the receiver lies on the light's side of the plane by
+// more than a lookup reaches. A point h above the plane (along its normal) sees the plane, s to its
+// side across the light, at least (h - s sin t) / cos t deeper (t: the light's angle to the normal);
+// h over twice the pad (the normal offset may move the lookup towards the plane) plus the depth reach
+// and the surface tolerance keeps every compare on the lit side. False for other lights.
+bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, const OrientedBox& receiver, float padTexels,
+                           float depthReach);
+
 scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
                                     float depthReach);
 

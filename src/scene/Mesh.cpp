@@ -132,20 +132,22 @@ bool Mesh::partIsConvex(std::size_t part, std::size_t mostTriangles) const {
 
 // Straight over the indices, stopping at the first vertex off the plane: no sorted copy of the
 // indices and no plane per triangle, which only partIsConvex needs.
-bool Mesh::partIsFlat(std::size_t part) const {
-    if (part >= parts.size()) return false;
+bool Mesh::partIsFlat(std::size_t part) const { return partPlane(part).has_value(); }
+
+std::optional<glm::vec4> Mesh::partPlane(std::size_t part) const {
+    if (part >= parts.size()) return std::nullopt;
     const MeshPart& mp = parts[part];
     const auto at = [&](std::uint32_t i) { return vertices[indices[i]].position; };
     std::optional<glm::vec4> plane;
     for (std::uint32_t i = mp.firstIndex; i + 2 < mp.firstIndex + mp.indexCount && !plane; i += 3)
         plane = planeOf(at(i), at(i + 1), at(i + 2));
-    if (!plane) return false;
+    if (!plane) return std::nullopt;
     Bounds box;
     for (std::uint32_t i = mp.firstIndex; i < mp.firstIndex + mp.indexCount; ++i) box.add(at(i));
     const float tolerance = kPlaneTolerance * glm::length(box.extent());
     for (std::uint32_t i = mp.firstIndex; i < mp.firstIndex + mp.indexCount; ++i)
-        if (std::abs(glm::dot(glm::vec3(*plane), at(i)) + plane->w) > tolerance) return false;
-    return true;
+        if (std::abs(glm::dot(glm::vec3(*plane), at(i)) + plane->w) > tolerance) return std::nullopt;
+    return plane;
 }
 
 bool Mesh::partHasFaceNormals(std::size_t part) const {

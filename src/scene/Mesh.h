@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,8 @@ struct Mesh {
     // O(triangles x vertices).
     bool partIsConvex(std::size_t part, std::size_t mostTriangles = 4096) const;
     bool partIsFlat(std::size_t part) const;  // every vertex of the part on the plane of its first proper triangle
+    // That plane (unit normal, offset) of a flat part; none for a part that is not flat.
+    std::optional<glm::vec4> partPlane(std::size_t part) const;
     // Whether every vertex normal of the part is its triangle's own normal (within 1e-5 in each
     // component; degenerate triangles left out): flat shading, so a point's N.L has its face's
     // sign. Smooth normals (a sphere's) can light a facet turned from the light.

@@ -60,6 +60,47 @@ TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
     EXPECT_EQ(renderer.shadowTriangles()[1], box) << "the spot looks at the +x box only";
 }
 
+// A flat caster whose shadow can fall on no other surface is left out of a sun's maps, with the
+// same pixels: a ground under floating casters (its 2 triangles), but not a ground something rests
+// on (its bottom lies within a lookup's reach of the ground), nor a platform over a sphere (which it
+// shadows). Every bounded-reach technique; the picture of each against `--every-caster`'s.
+TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
+    const auto sceneWith = [](const std::string& objects) {
+        return sceneFromJson(R"({
+          "camera": { "position": [6, 9, 10], "target": [0, 1.5, 0], "fov_deg": 45 },
+          "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 1024 } } ],
+          "objects": [ )" + objects + " ] }");
+    };
+    const std::string floating = R"({ "shape": "sphere", "radius": 0.5, "position": [-1, 3, 0] },
+                                    { "shape": "box", "position": [1.2, 2.6, 0.5], "rotation_deg": [0, 30, 0] })";
+    const std::string ground = R"({ "shape": "plane", "size": [20, 20] }, )";
+    struct Case {
+        std::string objects;
+        std::size_t leftOut;  // triangles
+        const char* what;
+    };
+    const Case cases[] = {
+        {ground + floating, 2, "a ground under floating casters"},
+        {ground + floating + R"(, { "shape": "box", "position": [0, 0.5, -1.5] })", 0, "a ground with a box resting on it"},
+        {floating + R"(, { "shape": "plane", "size": [3, 3], "position": [-1, 4.5, 0] })", 0, "a platform over the sphere"},
+    };
+    for (const Case& c : cases)
+        for (const char* technique : {"hard", "pcf-poisson16", "pcss", "cssm2", "distance"}) {
+            scene::Scene s = sceneWith(c.objects);
+            render::RenderOptions options;
+            options.technique = technique;
+            std::size_t left = 0, every = 0;
+            const std::vector<float> leftOut = visibilityAndTriangles(s, options, 96, 64, left);
+            options.onlyCastersThatShadow = false;
+            const std::vector<float> all = visibilityAndTriangles(s, options, 96, 64, every);
+            EXPECT_EQ(every - left, c.leftOut) << technique << ", " << c.what;
+            EXPECT_EQ(differingPixels(all, leftOut, 0.0f), 0u) << technique << ", " << c.what;
+            std::size_t shadowed = 0;
+            for (std::size_t i = 0; i < leftOut.size(); i += 4) shadowed += leftOut[i] < 0.5f;
+            EXPECT_GT(shadowed, 100u) << technique << ", " << c.what << ": shadows in view";
+        }
+}
+
 // The moment maps draw their casters straight into moments and read no depth map: with no
 // translucent caster in view (no tint pass to depth-test), each caster is drawn once per face it
 // reaches, as hard draws it, not once for a depth map and again for the moments. With a pane in
