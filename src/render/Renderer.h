@@ -248,6 +248,8 @@ private:
     // then hold what lies behind it, and every lookup answers as before: receivers' own texels
     // count as lit, and no other receiver lies behind the part within that reach.
     std::vector<std::uint32_t> lightsShadowingNothing(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
+    mutable std::uint64_t shadowsNothingKey_ = 0;  // lightsShadowingNothing's last answer and what it was of
+    mutable std::vector<std::uint32_t> shadowsNothing_;
     void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                         int width, int height) const;
     // The pieces a draw is drawn in: the tint split's rectangles, or its own, each cut by the
