@@ -401,6 +401,23 @@ const char* kThreeLightsScene = R"({
                    { "shape": "sphere", "radius": 0.6, "position": [1.2, 1.4, 0.8] },
                    { "shape": "plane", "size": [1, 1], "position": [1.5, 1.5, -1.5], "material": { "transmission": [0.1, 0.9, 0.1] } } ] })";
 
+// Calls `compare` with every mip level of each moment map of `a` and the same map of `b` (their
+// debug views), texel by texel, channel by channel. Returns how many maps it compared.
+template <typename Compare>
+int forEachMomentMap(const render::Renderer& a, const render::Renderer& b, Compare compare) {
+    const auto x = a.technique().debugViews(), y = b.technique().debugViews();
+    EXPECT_EQ(x.size(), y.size());
+    int maps = 0;
+    for (std::size_t v = 0; v < x.size() && v < y.size(); ++v) {
+        if (x[v].label.find("moments") == std::string::npos) continue;
+        ++maps;
+        const std::vector<float> first = textureLevels(x[v]), second = textureLevels(y[v]);
+        EXPECT_EQ(first.size(), second.size()) << x[v].label;
+        if (first.size() == second.size()) compare(x[v].label, first, second);
+    }
+    return maps;
+}
+
 class MomentComputeBlur : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
@@ -422,21 +439,15 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
         EXPECT_EQ(differingPixels(expected, compute.readLinear(), 1e-3f), 0u) << technique;
     }
     // The fragment passes' bilinear fetches weigh texels to ~1e-5 on llvmpipe (the exponential
-    // warps' worst texels, measured: 1.2e-5), the compute pass in floats; 16 bits round to 1.5e-5 (quantized
-    // msm), half floats to 2^-11.
+    // warps' worst texels, measured: 1.2e-5), the compute pass in floats; 16 bits round to 1.5e-5
+    // (quantized msm), half floats to 2^-11.
     const float relative = fp16 ? 2e-3f : 3e-5f;
-    const auto a = fragment.technique().debugViews(), b = compute.technique().debugViews();
-    ASSERT_EQ(a.size(), b.size());
-    int momentMaps = 0;
-    for (std::size_t v = 0; v < a.size(); ++v) {
-        if (a[v].label.find("moments") == std::string::npos) continue;
-        ++momentMaps;
-        const std::vector<float> x = textureLevels(a[v]), y = textureLevels(b[v]);
-        ASSERT_EQ(x.size(), y.size()) << a[v].label;
+    const int momentMaps = forEachMomentMap(fragment, compute, [&](const std::string& label, const std::vector<float>& x,
+                                                                   const std::vector<float>& y) {
         std::size_t differing = 0;
         for (std::size_t i = 0; i < x.size(); ++i) differing += std::abs(x[i] - y[i]) > relative * std::max(1.0f, std::abs(x[i]));
-        EXPECT_EQ(differing, 0u) << technique << ", " << a[v].label << " (" << x.size() << " values)";
-    }
+        EXPECT_EQ(differing, 0u) << technique << ", " << label << " (" << x.size() << " values)";
+    });
     EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
 }
 
@@ -445,9 +456,10 @@ INSTANTIATE_TEST_SUITE_P(Warps, MomentComputeBlur,
                          [](const auto& info) { return testNameOf(info.param); });
 
 // MSM's moments through the optimized quantization (Peters & Klein 2015, section 4.3) into RGBA16
-// are the 32-bit float moments to 16 bits: every level of the sun's and the spot light's maps, mapped
-// back with kMomentsDequantize on the CPU, within 1e-4 of the float map's (measured: 1.8e-5 and 1.5e-5), texels
-// where no caster is (the CPU's farMoments) too; and the pictures, all three lights, to 1/255.
+// are the 32-bit float moments to 16 bits: every level of the sun's and the spot light's maps,
+// mapped back with kMomentsDequantize on the CPU, within 1e-4 of the float map's (measured: 1.8e-5
+// and 1.5e-5), texels where no caster is (the CPU's farMoments) too; and the pictures, all three
+// lights, to 1/255.
 TEST(MomentQuantization, SixteenBitsHoldTheFloatMoments) {
     scene::Scene s = sceneFromJson(kThreeLightsScene);
     render::OffscreenTarget target(96, 96);
@@ -458,23 +470,17 @@ TEST(MomentQuantization, SixteenBitsHoldTheFloatMoments) {
     const std::size_t differing = differingPixels(full.readLinear(), pixels, 1.0f / 255.0f);
     std::printf("pixels over 1/255 apart: %zu\n", differing);
     EXPECT_EQ(differing, 0u);
-    const auto a = quantized.technique().debugViews(), b = full.technique().debugViews();
-    ASSERT_EQ(a.size(), b.size());
-    int momentMaps = 0;
-    for (std::size_t v = 0; v < a.size(); ++v) {
-        if (a[v].label.find("moments") == std::string::npos) continue;
-        ++momentMaps;
-        const std::vector<float> q = textureLevels(a[v]), f = textureLevels(b[v]);
-        ASSERT_EQ(q.size(), f.size()) << a[v].label;
+    const int momentMaps = forEachMomentMap(quantized, full, [](const std::string& label, const std::vector<float>& q,
+                                                                const std::vector<float>& f) {
         float worst = 0.0f;
         for (std::size_t i = 0; i + 3 < q.size(); i += 4) {
             const glm::vec4 stored(q[i], q[i + 1], q[i + 2], q[i + 3]);
             const glm::vec4 moments = gpu::kMomentsDequantize * (stored - gpu::kMomentsQuantizeOffset);
             for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(moments[c] - f[i + static_cast<std::size_t>(c)]));
         }
-        std::printf("%s: worst moment error %.2g\n", a[v].label.c_str(), worst);
-        EXPECT_LT(worst, 1e-4f) << a[v].label;
-    }
+        std::printf("%s: worst moment error %.2g\n", label.c_str(), worst);
+        EXPECT_LT(worst, 1e-4f) << label;
+    });
     EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
 }
 
