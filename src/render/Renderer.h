@@ -104,7 +104,7 @@ struct RenderOptions {
     bool shadowOnlyWhereCast = true;
     // Leave out of a light's maps the flat opaque casters whose shadow can fall on no other surface
     // (a ground under everything), with those techniques: the same pixels, less of the maps drawn
-    // (Renderer::lightsShadowedByNothing). false (`--every-caster`) draws every caster.
+    // (Renderer::lightsShadowingNothing). false (`--every-caster`) draws every caster.
     bool onlyCastersThatShadow = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
@@ -241,7 +241,6 @@ private:
     // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
     void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                        int width, int height) const;
-    // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
     // Per draw, a bit per light whose maps may leave the draw out: an opaque flat part (no solid)
     // that shadows none of its own points, whose shadow footprint on every other draw is empty
     // (as addShadowReach pads it), with a technique that bounds its lookup's reach. Its map texels
@@ -250,6 +249,7 @@ private:
     std::vector<std::uint32_t> lightsShadowingNothing(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
     mutable std::uint64_t shadowsNothingKey_ = 0;  // lightsShadowingNothing's last answer and what it was of
     mutable std::vector<std::uint32_t> shadowsNothing_;
+    // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
     void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                         int width, int height) const;
     // The pieces a draw is drawn in: the tint split's rectangles, or its own, each cut by the

@@ -76,6 +76,9 @@ inline scene::Bounds shadowFootprint(const gpu::LightData& light, const Oriented
 // caster wholly behind a receiver's point puts nothing in front of it in the map. `depthReach`:
 // how much deeper than its receiver's biased depth a lookup may compare, in window depth
 // (ShadowTechnique::shadowReachDepth: the receiver-plane taps' clamp).
+scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
+                                    float depthReach);
+
 // Whether a flat opaque caster in `plane` (world; unit normal, offset) leaves every point of
 // `receiver` lit under a directional light: the receiver lies on the light's side of the plane by
 // more than a lookup reaches. A point h above the plane (along its normal) sees the plane, s to its
@@ -84,9 +87,6 @@ inline scene::Bounds shadowFootprint(const gpu::LightData& light, const Oriented
 // and the surface tolerance keeps every compare on the lit side. False for other lights.
 bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, const OrientedBox& receiver, float padTexels,
                            float depthReach);
-
-scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedBox& caster, const OrientedBox& receiver, float padTexels,
-                                    float depthReach);
 
 // How near a receiver may come to a caster's layers before it counts as on their side: a lookup
 // that compares its biased depth with the layers (Lookup: an opaque receiver's tint product, whose
