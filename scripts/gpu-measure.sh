@@ -55,8 +55,13 @@ step "goal ratios, glass scene" 60 penumbra bench scenes/glass.json --techniques
 # pass is cheap), against `tile_bounds_every_frame=true`, which makes them as before; and the
 # moment maps' blur kernels (the box, the default since stop 69, saved a quarter of the pass there),
 # and stop 69's blur and first mip levels in one compute pass with shared memory (`compute_blur`;
-# 7x the shadow pass on llvmpipe).
-step "stop 68-69 choices, maps redrawn" 120 penumbra bench --techniques hard,pcf-poisson16,pcf-poisson16:tile_bounds_every_frame=true,pcss,pcss:tile_bounds_every_frame=true,vsm,vsm:blur_kernel=gaussian,vsm:compute_blur=true --redraw-shadow-maps "${rounds[@]}" --out "$work/stop68"
+# 7x the shadow pass on llvmpipe); stop 70's MSM moments quantized to 64 bits (the default) against
+# RGBA32F (`quantized=false`; on llvmpipe the pass 1.79-2.12x hard's against 1.96-2.38x).
+step "stop 68-70 choices, maps redrawn" 140 penumbra bench --techniques hard,pcf-poisson16,pcf-poisson16:tile_bounds_every_frame=true,pcss,pcss:tile_bounds_every_frame=true,vsm,vsm:blur_kernel=gaussian,vsm:compute_blur=true,msm,msm:quantized=false --redraw-shadow-maps "${rounds[@]}" --out "$work/stop68"
+# Stop 70's flat casters left out where their shadow falls on nothing (the osgShadow grid's
+# ground), against `--every-caster`, maps redrawn.
+step "stop 70 casters that shadow nothing, grid" 60 penumbra bench --grid-scene 98000 --techniques floor-depth,hard,pcf-poisson16 --shadow-res 2048 --fixed-camera --redraw-shadow-maps "${rounds[@]}" --out "$work/stop70-cut"
+step "stop 70 every caster, grid" 60 penumbra bench --grid-scene 98000 --techniques floor-depth,hard,pcf-poisson16 --shadow-res 2048 --fixed-camera --redraw-shadow-maps --every-caster "${rounds[@]}" --out "$work/stop70-every"
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
 # The view-dependent maps against hard from the scene's own camera, as the llvmpipe tables take them.
 step "default scene, fixed camera" 40 penumbra bench --techniques none,hard,cascaded,lispsm,psm "${hd[@]}" --fixed-camera "${short[@]}" --out "$work/fixed"
