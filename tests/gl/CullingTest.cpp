@@ -101,6 +101,34 @@ TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
         }
 }
 
+// A live renderer decides it again when the scene changes: a sphere floating over a ground leaves
+// the ground out; moved down to rest on it, the ground is drawn; floated up again, left out; with a
+// polygon offset that pulls depths towards the light, drawn. (The answer is kept between frames
+// while nothing changes.)
+TEST(Culling, ALiveRendererDecidesAgainWhatShadowsNothing) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [4, 6, 7], "target": [0, 1, 0], "fov_deg": 45 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] }, { "shape": "sphere", "radius": 0.5, "position": [0, 3, 0] } ] })");
+    render::RenderOptions options;
+    options.technique = "hard";
+    options.reuseStillCasters = false;  // every map drawn every frame, to count what goes into it
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(64, 64);
+    const auto triangles = [&] {
+        renderer.render(0.0f, s.camera, 64, 64, target.framebuffer());
+        return renderer.shadowTriangles().at(0);
+    };
+    const std::size_t floating = triangles();
+    EXPECT_EQ(triangles(), floating) << "nothing changed";
+    s.objects[1].position.y = 0.5f;
+    EXPECT_EQ(triangles(), floating + 2) << "the sphere rests on the ground";
+    s.objects[1].position.y = 3.0f;
+    EXPECT_EQ(triangles(), floating) << "floating again";
+    s.lights[0].shadow.polygonOffset = {-1.0f, -1.0f};
+    EXPECT_EQ(triangles(), floating + 2) << "an offset towards the light";
+}
+
 // The moment maps draw their casters straight into moments and read no depth map: with no
 // translucent caster in view (no tint pass to depth-test), each caster is drawn once per face it
 // reaches, as hard draws it, not once for a depth map and again for the moments. With a pane in
