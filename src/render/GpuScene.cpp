@@ -41,7 +41,6 @@ GpuScene::GpuScene(const scene::Scene& scene, float anisotropy, bool clusters) :
         if (judged[meshIndex]) continue;
         judged[meshIndex] = true;
         meshes_[meshIndex].closedParts = scene.meshes[meshIndex].closedParts();
-        meshes_[meshIndex].planes.assign(scene.meshes[meshIndex].parts.size(), std::nullopt);
         for (std::size_t p = 0; p < scene.meshes[meshIndex].parts.size(); ++p) {
             if (!meshes_[meshIndex].closedParts[p]) meshes_[meshIndex].planes[p] = scene.meshes[meshIndex].partPlane(p);
             meshes_[meshIndex].flatOrConvexParts[p] = meshes_[meshIndex].closedParts[p] ? scene.meshes[meshIndex].partIsConvex(p)

@@ -62,7 +62,7 @@ void MomentShadowMap::buildPrograms() {
     alphaTested.defines.emplace_back("ALPHA_TEST 1");
     casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
-    built_ = {blurRadius_, halfResolution_, blurKernel_, quantized()};
+    built_ = programKey();
 }
 
 std::vector<std::string> MomentShadowMap::lookupDefines() const {
@@ -456,7 +456,7 @@ void MomentShadowMap::makeMipLevels(std::size_t i, const std::vector<FaceLevels>
 }
 
 void MomentShadowMap::renderMaps(const ShadowFrame& frame) {
-    if (built_ != std::tuple{blurRadius_, halfResolution_, blurKernel_, quantized()}) buildPrograms();
+    if (built_ != programKey()) buildPrograms();
     maps_.render(frame, DepthAndTintMaps::kEveryLight);  // the moments do not read the depth: the tint's test alone
     gl::DebugGroup group("moments");
     for (std::size_t i = 0; i < maps_.slots().size(); ++i) {

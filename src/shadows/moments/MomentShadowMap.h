@@ -110,8 +110,9 @@ private:
     // MSM's moments through the optimized quantization into RGBA16 (MomentWarp.h).
     bool quantized_ = true;
     bool quantized() const { return warp_ == Warp::Moments4 && quantized_; }
-    // The blur radius, half resolution, kernel and quantization the programs were built with.
-    std::tuple<int, bool, int, bool> built_{-1, false, -1, false};
+    // What the programs are compiled for: the blur radius, half resolution, kernel and quantization.
+    std::tuple<int, bool, int, bool> programKey() const { return {blurRadius_, halfResolution_, blurKernel_, quantized()}; }
+    std::tuple<int, bool, int, bool> built_{-1, false, -1, false};  // programKey() when last built
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
     bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
