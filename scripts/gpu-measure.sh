@@ -50,6 +50,12 @@ step warm-up 40 penumbra bench --techniques cssm2 "${hd[@]}" --seconds 8 --warmu
 rounds=(--rounds 8 --seconds 0.5 --warmup-seconds 0.5 --interleave 9 --no-images)
 step "goal ratios, default scene" 90 penumbra bench --techniques none,hard,cssm2,cssm1,pcf-poisson16,pcss "${rounds[@]}" --out "$work/goals-default"
 step "goal ratios, glass scene" 60 penumbra bench scenes/glass.json --techniques hard,cssm2,cssm1 --fixed-camera "${rounds[@]}" --out "$work/goals-glass"
+# The same goals without the screen split (receivers cut into rectangles, each drawn with a
+# program that leaves out what cannot reach it: a shadow lookup, a light, the tint): on llvmpipe it
+# pays, each pixel being dear; on a GPU its extra draws and program switches (120 draws against 42
+# for none, default scene, hard) may cost more than the lookups they save. Compare the ratios.
+step "goal ratios without the split, default scene" 90 penumbra bench --techniques none,hard,cssm2 --shadow-everywhere --light-everywhere --tint-everywhere "${rounds[@]}" --out "$work/goals-default-whole"
+step "goal ratios without the split, glass scene" 60 penumbra bench scenes/glass.json --techniques hard,cssm2 --fixed-camera --shadow-everywhere --light-everywhere --tint-everywhere "${rounds[@]}" --out "$work/goals-glass-whole"
 # Stop 68's two llvmpipe-made choices, in rounds with every map redrawn: the depth tile bounds,
 # made only for kept maps (on llvmpipe their pass cost more than the taps they saved; on a GPU the
 # pass is cheap), against `tile_bounds_every_frame=true`, which makes them as before; and the

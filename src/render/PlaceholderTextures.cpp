@@ -2,6 +2,8 @@
 
 #include "gpu/ShaderContract.h"
 
+#include <algorithm>
+
 namespace penumbra::render {
 
 namespace {
@@ -29,26 +31,26 @@ PlaceholderTextures::PlaceholderTextures()
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     glTextureStorage3D(id, 1, GL_RGBA8, 1, 1, 1);
     white3D_ = filled(gl::Texture::adopt(GL_TEXTURE_3D, id, 1, 1, 4), GL_RGBA, GL_FLOAT, kWhite);
+    std::array<GLuint, gpu::kUnitBehindDepth + 1> unit{};
+    unit.fill(white2D_.id());
+    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) unit[gpu::kUnitShadow2D + slot] = depth2D_.id();
+    for (int slot = 0; slot < gpu::kMaxShadowCube; ++slot) {
+        unit[gpu::kUnitShadowCube + slot] = depthCube_.id();
+        for (int first : {gpu::kUnitTintCube, gpu::kUnitRawCube, gpu::kUnitDrawnFarthestCube}) unit[first + slot] = whiteCube_.id();
+    }
+    unit[gpu::kUnitLayered] = depthArray_.id();
+    unit[gpu::kUnitScreenShadow] = whiteArray_.id();
+    unit[gpu::kUnitDepthTiles] = whiteArray_.id();
+    unit[gpu::kUnitJitter] = white3D_.id();
+    std::copy_n(unit.begin(), low_.size(), low_.begin());
+    std::copy_n(unit.begin() + gpu::kUnitDrawnFarthest2D, high_.size(), high_.begin());
 }
 
 void PlaceholderTextures::bindAll() const {
-    // Units from kUnitDualDepth up belong to the camera-transparency passes, which bind them.
-    for (int unit = 0; unit < gpu::kUnitDualDepth; ++unit) white2D_.bind(static_cast<GLuint>(unit));
-    for (int slot = 0; slot < gpu::kMaxShadow2D; ++slot) {
-        depth2D_.bind(static_cast<GLuint>(gpu::kUnitShadow2D + slot));
-        white2D_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthest2D + slot));
-    }
-    for (int slot = 0; slot < gpu::kMaxShadowCube; ++slot) {
-        depthCube_.bind(static_cast<GLuint>(gpu::kUnitShadowCube + slot));
-        whiteCube_.bind(static_cast<GLuint>(gpu::kUnitTintCube + slot));
-        whiteCube_.bind(static_cast<GLuint>(gpu::kUnitRawCube + slot));
-        whiteCube_.bind(static_cast<GLuint>(gpu::kUnitDrawnFarthestCube + slot));
-    }
-    depthArray_.bind(gpu::kUnitLayered);
-    whiteArray_.bind(gpu::kUnitScreenShadow);
-    whiteArray_.bind(gpu::kUnitDepthTiles);
-    white3D_.bind(gpu::kUnitJitter);
-    white2D_.bind(gpu::kUnitBehindDepth);
+    // Units from kUnitDualDepth to kUnitOpaqueDepth belong to the camera-transparency passes,
+    // which bind them.
+    glBindTextures(0, static_cast<GLsizei>(low_.size()), low_.data());
+    glBindTextures(gpu::kUnitDrawnFarthest2D, static_cast<GLsizei>(high_.size()), high_.data());
 }
 
 }  // namespace penumbra::render

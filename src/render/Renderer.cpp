@@ -383,6 +383,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             fogDepth_ = nullptr;
         } else if (shaded) {
             if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
+            bindLightingUnits();
             oit_->render(mode, options_.peelLayers, gpu_, draws,
                          [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
                          height);
@@ -465,13 +466,15 @@ void Renderer::prepareLighting(const gl::Program& program, bool translucent, con
     program.set("uTranslucentPass", translucent ? 1 : 0);
     program.set("uOutputMode", static_cast<int>(options_.output));
     program.set("uDebugLight", options_.debugLight);
-    const bool behind = behind_ && options_.output != OutputMode::Shaded;
-    program.set("uShowBehind", behind ? 1 : 0);
+    program.set("uShowBehind", showsBehind() ? 1 : 0);
     if (fogInShading()) setFogUniforms(program, camera, aspect);
-    placeholders_.bindAll();
-    if (behind) behind_->bind(gpu::kUnitBehindDepth);
-    if (fogDepth_) fogDepth_->bind(gpu::kUnitOpaqueDepth);
     technique_->bindLookup(program);
+}
+
+void Renderer::bindLightingUnits() const {
+    placeholders_.bindAll();
+    if (showsBehind()) behind_->bind(gpu::kUnitBehindDepth);
+    if (fogDepth_) fogDepth_->bind(gpu::kUnitOpaqueDepth);
     int projector = 0;
     for (const auto& light : scene_.lights)
         if (light.type == scene::Light::Type::Projector && projector < gpu::kMaxProjectors)
@@ -1084,13 +1087,18 @@ void Renderer::drawSurfaces(const std::vector<Draw>& draws, bool translucent, co
         return !split || split->draws.empty() ? whole : split->draws[i];
     };
     std::vector<std::vector<Piece>> pieces(draws.size());
-    for (std::size_t i = 0; i < draws.size(); ++i)  // builds what this pass needs before it is prepared
+    std::vector<const gl::Program*> used;  // by this pass: built and prepared before it draws
+    const auto use = [&](const gl::Program& p) {
+        if (std::find(used.begin(), used.end(), &p) == used.end()) used.push_back(&p);
+    };
+    for (std::size_t i = 0; i < draws.size(); ++i)
         if (drawn(draws[i])) {
             pieces[i] = piecesOf(split, i);
-            if (pieces[i].empty()) lighting_.of(*draws[i].material, draws[i].translucent, tintOf(i).lookup);
-            for (const Piece& p : pieces[i]) lighting_.of(*draws[i].material, draws[i].translucent, p.lookup, p.unlit, p.unshadowed);
+            if (pieces[i].empty()) use(lighting_.of(*draws[i].material, draws[i].translucent, tintOf(i).lookup));
+            for (const Piece& p : pieces[i]) use(lighting_.of(*draws[i].material, draws[i].translucent, p.lookup, p.unlit, p.unshadowed));
         }
-    lighting_.forEachBuilt([&](const gl::Program& p) { prepareLighting(p, translucent, camera, aspect); });
+    bindLightingUnits();
+    for (const gl::Program* p : used) prepareLighting(*p, translucent, camera, aspect);
     gl::PassState state = gl::PassState::depthOnly();
     state.depthFunc = GL_LEQUAL;
     if (translucent && options_.output == OutputMode::Shaded) {

@@ -263,7 +263,13 @@ private:
     void useLightLayout(std::vector<std::string> layout);
     std::vector<std::string> lightingDefines(const shadows::ShadowTechnique& technique) const;
     void drawDebugLines(const scene::Camera& camera, float aspect);
+    // A lighting program's uniforms and its technique's lookup, before a pass draws with it.
     void prepareLighting(const gl::Program& program, bool translucent, const scene::Camera& camera, float aspect);
+    // The texture units every lighting program of a pass reads besides the technique's maps
+    // (placeholders, projector pictures, the debug and fog depths): context state, bound once a pass.
+    void bindLightingUnits() const;
+    // A debug channel looks behind the surface showBehind chose.
+    bool showsBehind() const { return behind_ && options_.output != OutputMode::Shaded; }
     LightingPrograms buildLighting(const shadows::ShadowTechnique& technique, std::vector<std::string> defines) const;
     void resolve(GLuint target, int width, int height, const scene::Camera& camera, float aspect);
     void setFogUniforms(const gl::Program& program, const scene::Camera& camera, float aspect) const;
