@@ -65,15 +65,32 @@ GLint Program::location(const char* name) const {
     return loc;
 }
 
-void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
-void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
-void Program::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::ivec2& v) const { glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec3& v) const { glProgramUniform3fv(id(), location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec4& v) const { glProgramUniform4fv(id(), location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::ivec4& v) const { glProgramUniform4iv(id(), location(n), 1, glm::value_ptr(v)); }
+// A name the program does not use (location -1) is a no-op in GL: not called at all. Materials set
+// the same uniforms on every program that draws them, depth-only ones included (half the uniform
+// calls of a default-scene frame were such).
+void Program::set(const char* n, int v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform1i(id(), at, v);
+}
+void Program::set(const char* n, float v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform1f(id(), at, v);
+}
+void Program::set(const char* n, const glm::vec2& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform2fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::ivec2& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform2iv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec3& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform3fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec4& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform4fv(id(), at, 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::ivec4& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform4iv(id(), at, 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::mat4& v) const {
-    glProgramUniformMatrix4fv(id(), location(n), 1, GL_FALSE, glm::value_ptr(v));
+    if (const GLint at = location(n); at >= 0) glProgramUniformMatrix4fv(id(), at, 1, GL_FALSE, glm::value_ptr(v));
 }
 
 }  // namespace penumbra::gl
