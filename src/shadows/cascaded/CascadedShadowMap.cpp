@@ -28,12 +28,11 @@ std::vector<Parameter> CascadedShadowMap::declareParameters() {
 
 void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
-    maps_.render(frame, frame.camera ? frame.slots->sun : -1);
-    const auto& lights = *frame.lights;
+    const scene::Light* sunLight = maps_.renderAllButTheSun(frame);
     light_ = frame.slots->sun;
     reachTexels_ = -1.0f;
-    if (light_ < 0 || !frame.camera) return;
-    const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
+    if (!sunLight) return;
+    const scene::Light& sun = *sunLight;
     const int count = std::clamp(count_, 1, 8);
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     const scene::Camera& cam = *frame.camera;

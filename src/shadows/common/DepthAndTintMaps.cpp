@@ -232,6 +232,12 @@ glm::vec2 DepthAndTintMaps::translucentTestOffset(const Light& light) {
     return light.shadow.polygonOffset + glm::vec2(0.0f, kMoreUnits);
 }
 
+const scene::Light* DepthAndTintMaps::renderAllButTheSun(const ShadowFrame& frame) {
+    const int sun = frame.slots->sun;
+    render(frame, frame.camera ? sun : -1);
+    return sun >= 0 && frame.camera ? &(*frame.lights)[static_cast<std::size_t>(sun)] : nullptr;
+}
+
 void DepthAndTintMaps::render(const ShadowFrame& frame, int elsewhere, const TranslucentPass& translucentPass) {
     const auto& lights = *frame.lights;
     const auto& spaces = *frame.lightSpaces;

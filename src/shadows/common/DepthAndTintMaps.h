@@ -127,6 +127,10 @@ public:
     using TranslucentPass = std::function<void(std::size_t light, std::size_t face)>;
     static constexpr int kEveryLight = -2;
     void render(const ShadowFrame& frame, int elsewhere = -1, const TranslucentPass& translucentPass = {});
+    // For techniques that keep the sun's depth in a layered map of their own (cascades, warped
+    // maps), which needs a camera to fit: render(frame, sun) while a camera looks, else every map
+    // here. Returns the sun to draw that map for, or nullptr (no sun or no camera this frame).
+    const scene::Light* renderAllButTheSun(const ShadowFrame& frame);
     // Binds each light's maps to the units of its slot (gpu/ShaderContract.h); with `rawDepth`
     // the depth map is also bound, without comparison, to the raw units.
     void bind(bool rawDepth = false) const;

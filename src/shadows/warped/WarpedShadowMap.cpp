@@ -35,12 +35,11 @@ std::vector<Parameter> WarpedShadowMap::declareParameters() {
 
 void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
-    maps_.render(frame, frame.camera ? frame.slots->sun : -1);
-    const auto& lights = *frame.lights;
+    const scene::Light* sunLight = maps_.renderAllButTheSun(frame);
     light_ = frame.slots->sun;
     reachTexels_ = -1.0f;
-    if (light_ < 0 || !frame.camera) return;
-    const scene::Light& sun = lights[static_cast<std::size_t>(light_)];
+    if (!sunLight) return;
+    const scene::Light& sun = *sunLight;
     const glm::ivec2 grid = requestedGrid();
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) fitViews(frame, sun, grid);
