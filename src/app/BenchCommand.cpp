@@ -142,6 +142,7 @@ void printTable(const std::vector<bench::CaseResult>& results) {
                 std::printf("    calibration %-12s query %8.2f ms  glFinish wall %8.2f ms%s\n", render::toString(static_cast<render::Pass>(p)),
                             cal.queryMs, cal.wallMs, cal.flagged ? "  <-- differ by over 10 %" : "");
             }
+        for (const auto& [path, ms] : r.subPassMs) std::printf("    sub-pass %-56s glFinish wall %8.2f ms\n", path.c_str(), ms);
     }
 }
 

@@ -4,6 +4,7 @@
 #include "gl/Debug.h"
 #include "gl/Program.h"
 #include "render/Offscreen.h"
+#include "render/SubPassClock.h"
 #include "scene/io/SceneFile.h"
 
 #include <algorithm>
@@ -342,6 +343,11 @@ void finish(CaseRun& run) {
         r.finishOverheadMs = engine.timer().finishOverheadMs();
         engine.timer().setCalibration(false);
         r.calibrated = true;
+        {  // the passes' parts, in frames of their own: their glFinish calls would weigh on the above
+            render::SubPassClock clock(r.finishOverheadMs);
+            for (int i = 0; i < n; ++i) run.step();
+            r.subPassMs = clock.perFrame(n);
+        }
     }
 
     if (settings.images && r.spec.round == 0) {  // later rounds (--rounds) draw the same pictures

@@ -8,6 +8,7 @@
 #include "render/Renderer.h"
 
 #include <array>
+#include <map>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -81,6 +82,9 @@ struct CaseResult {
     bool calibrated = false;
     double finishOverheadMs = 0;  // an empty glFinish round trip, subtracted from the wall times
     std::array<PassCalibration, render::kPassCount> calibration;
+    // With calibration: each debug group's glFinish-bounded wall ms per frame, by path
+    // ("shadow maps/moments/blur"; render/SubPassClock.h), from frames of their own.
+    std::map<std::string, double> subPassMs;
     shadows::ParameterValues parameters;  // every parameter of the technique as it ran
     int glErrors = 0;
     int glWarnings = 0;  // driver warnings while the case ran (its frames paid for their callbacks)

@@ -19,6 +19,11 @@ DebugMessageHook setDebugMessageHook(DebugMessageHook hook);
 // Checks glGetError and throws std::runtime_error naming `where` if one is pending.
 void checkError(const char* where);
 
+// Called as each DebugGroup opens (with its name) and closes (with nullptr); returns the hook it
+// replaces. render::SubPassClock times the groups through it.
+using DebugGroupHook = void (*)(const char* openedName);
+DebugGroupHook setDebugGroupHook(DebugGroupHook hook);
+
 // RAII debug group: shows up in apitrace/RenderDoc captures and debug logs.
 class DebugGroup {
 public:

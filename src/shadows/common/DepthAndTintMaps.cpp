@@ -311,10 +311,12 @@ void DepthAndTintMaps::render(const ShadowFrame& frame, int elsewhere, const Tra
             const TexelRect redraw = !withTint_ ? TexelRect(0) : kept ? m.translucentRedo[face] : unite(m.tintDirty[face], tinted);
             const bool opaqueDrawn = !depthElsewhere(light) || (anyTranslucent && !isEmpty(redraw));
             if (opaqueDrawn) {
+                const gl::DebugGroup depthGroup("depth");
                 const gl::ScopedPassState state(opaquePass);
                 renderOpaque(frame, m, face, light, region, stillKey, moving, translucentOverStill);
             }
             if (!isEmpty(redraw)) {
+                const gl::DebugGroup tintGroup("tint");
                 m.tintDirty[face] = kept ? unite(m.tintDirty[face], tinted) : tinted;
                 redrawTint(frame, m, face, anyTranslucent ? &translucent : nullptr, redraw, lights[i]);
             }

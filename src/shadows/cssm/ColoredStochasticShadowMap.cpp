@@ -139,6 +139,7 @@ int ColoredStochasticShadowMap::tileSide() const { return filter_ == gpu::kCssmB
 // `whole`, every other tile is cleared to zeros, what tiles.frag and nearest_layer.frag make of a
 // tile no translucent layer covers; without, the other tiles are kept.
 void ColoredStochasticShadowMap::renderTiles(LightMap& m, std::size_t face, const TexelRect& rect, bool whole) {
+    const gl::DebugGroup group("tiles");
     const float zero[4] = {0, 0, 0, 0};
     if (whole) {
         glClearNamedFramebufferfv(m.tileTargets[face].id(), GL_COLOR, 0, zero);

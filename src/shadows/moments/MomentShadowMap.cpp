@@ -350,6 +350,7 @@ MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t f
     const TexelRect xBlurred = grown(blurred, glm::ivec2(0, blurTaps_), m.resolution);
     const TexelRect unblurred = onePass ? grown(blurred, glm::ivec2(1), m.resolution) : grown(xBlurred, glm::ivec2(blurTaps_, 0), m.resolution);
     glEnable(GL_SCISSOR_TEST);
+    std::optional<gl::DebugGroup> part(std::in_place, "raster");
     if (m.multisampledDepth.id() != 0)
         convertMultisampled(i, face, blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0], blurTaps_ > 0 ? unblurred : blurred, frame);
     else
@@ -379,6 +380,8 @@ MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t f
         levels.rect.push_back(coarser(levels.rect.back(), 2, size));
         levels.reached.push_back(intersection(levels.rect.back(), coarser(levels.reached.back(), 2, size)));
     }
+    part.reset();
+    part.emplace("blur");
     const gl::ScopedPassState state(gl::PassState::fullscreen());
     glViewport(0, 0, m.resolution, m.resolution);
     fullscreenVao_.bind();
@@ -418,6 +421,7 @@ MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t f
 }
 
 void MomentShadowMap::makeMipLevels(std::size_t i, const std::vector<FaceLevels>& faces) {
+    const gl::DebugGroup group("mip levels");
     const LightMoments& m = moments_[i];
     const int faceCount = static_cast<int>(faces.size());
     const gl::ScopedPassState state(gl::PassState::fullscreen());
