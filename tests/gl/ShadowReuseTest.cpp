@@ -185,7 +185,7 @@ TEST_P(ShadowReuse, PicturesEqualRedrawingEveryMapWithAnimatedGlass) {
 // blur spreads a moving caster's moments beyond its texels: they must be redone there too.
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowReuse, ::testing::Values("hard", "pcf-poisson16", "pcss", "cssm2", "cssm2:xi=white", "vsm", "vsm:blur_radius=16", "vsm:blur_kernel=gaussian",
                                                                   "vsm:compute_blur=true", "vsm:blur_kernel=gaussian:compute_blur=true",
-                                                                  "msm", "cascaded", "cascaded:fit_receivers=false", "lispsm", "psm"));
+                                                                  "msm", "evsm4", "cascaded", "cascaded:fit_receivers=false", "lispsm", "psm"));
 
 // A map drawn whole every frame makes no tile bounds (the bounds' pass cost llvmpipe more than the
 // taps they saved): its layer holds bounds that never agree (a = -4), so the lookups run their whole

@@ -29,9 +29,27 @@ bool MomentShadowMap::boxKernel(int radius, bool halfResolution, int kernel) {
     return radius > 0 && (kernel == kBlurBox || (kernel == kBlurAuto && gaussianTaps(radius, halfResolution) == 1));
 }
 
+bool MomentShadowMap::firstOrderRaw() const {
+    const bool msaa = std::get<4>(built_), compute = std::get<5>(built_), fp16 = std::get<6>(built_);
+    // Half floats would hold p rounded and its square taken of that: twice the rounding of p^2
+    // stored (MomentComputeBlur with fp16, 2 values of the map over 2^-9 apart).
+    return (warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) && boxBlur() && !msaa && !compute && !fp16;
+}
+
+GLenum MomentShadowMap::rawFormat() const {
+    if (!firstOrderRaw()) return format();
+    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;
+}
+
+glm::vec4 MomentShadowMap::farRaw() const {
+    const glm::vec4 far = farMoments();
+    return firstOrderRaw() ? glm::vec4(far.x, far.z, 0.0f, 0.0f) : far;
+}
+
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
 // moments.frag, blur.frag, blur_bilinear.frag): rebuilt when a parameter changes them.
 void MomentShadowMap::buildPrograms() {
+    built_ = programKey();  // firstOrderRaw() reads it
     const bool box = boxKernel(blurRadius_, halfResolution_, blurKernel_);
     const int taps = box ? 1 : gaussianTaps(blurRadius_, halfResolution_);
     const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / (halfResolution_ ? 2.0f : 1.0f), 0.5f);
@@ -43,11 +61,13 @@ void MomentShadowMap::buildPrograms() {
     defines.push_back("BLUR_RADIUS " + std::to_string(taps));
     defines.push_back("BLUR_SIGMA " + std::to_string(sigma));
     defines.push_back(std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0"));
+    defines.push_back(std::string("RAW_FIRST_ORDER ") + (firstOrderRaw() ? "1" : "0"));
     toMoments_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     // The box in one bilinear fetch; the Gaussian of radius 1 in one pass of four, larger ones in two
     // separable passes (see update).
-    const char* blur = box          ? "src/shadows/moments/blur_box.frag"
+    const char* blur = box && firstOrderRaw() ? "src/shadows/moments/blur_box_evsm.frag"
+                       : box              ? "src/shadows/moments/blur_box.frag"
                        : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
                                    : "src/shadows/moments/blur.frag";
     blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = defines});
@@ -57,12 +77,11 @@ void MomentShadowMap::buildPrograms() {
                                       .defines = {std::string("LAYERED ") + (layeredMips_ ? "1" : "0")}});
     const gl::ProgramDesc caster{.vertex = "src/shadows/common/glsl/caster.vert",
                                  .fragment = "src/shadows/moments/caster_moments.frag",
-                                 .defines = lookupDefines()};
+                                 .defines = defines};
     gl::ProgramDesc alphaTested = caster;
     alphaTested.defines.emplace_back("ALPHA_TEST 1");
     casterMoments_.emplace(caster, alphaTested, false);
     blurTaps_ = taps;
-    built_ = programKey();
 }
 
 std::vector<std::string> MomentShadowMap::lookupDefines() const {
@@ -140,13 +159,14 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     const int levels = mipmaps_ ? 1 + static_cast<int>(std::log2(res)) : 1;
     const bool msaa = msaa_;
     if (m.resolution == res && m.depthResolution == depth.resolution && m.cube == depth.cube && m.format == format() &&
-        m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
+        m.rawFormat == rawFormat() && m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
         return;
     m = LightMoments{};
     m.resolution = res;
     m.depthResolution = depth.resolution;
     m.cube = depth.cube;
     m.format = format();
+    m.rawFormat = rawFormat();
     m.levels = levels;
     if (m.cube) {
         GLuint id = 0;
@@ -160,7 +180,7 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     }
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
-    m.raw = gl::Texture::create2D(m.format, res, res);
+    m.raw = gl::Texture::create2D(m.rawFormat, res, res);
     m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
     m.raw.setWrap(GL_CLAMP_TO_EDGE);
     m.rasterDepth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
@@ -248,7 +268,7 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     target.bind();
     glViewport(0, 0, m.resolution, m.resolution);
     glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
-    const glm::vec4 none = farMoments();
+    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);

@@ -15,7 +15,8 @@ namespace penumbra::shadows {
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
 // moments are drawn straight into a map of their own resolution with its own depth buffer
 // (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a
-// 2 x 2 box by default, or a Gaussian) and optionally mip-mapped for trilinear/anisotropic
+// 2 x 2 box by default, or a Gaussian; EVSM's box squares the warped depths the raster drew,
+// blur_box_evsm.frag) and optionally mip-mapped for trilinear/anisotropic
 // filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
 // depth is drawn only under the translucent casters, as its depth test
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
@@ -46,7 +47,7 @@ private:
         int resolution = 0;       // of the moments
         int depthResolution = 0;  // of the depth map they come from
         bool cube = false;
-        GLenum format = 0;
+        GLenum format = 0, rawFormat = 0;
         int levels = 1;
         gl::Texture moments;
         // 2D: the unblurred moments of one face, and those blurred along x (made for radii over 1)
@@ -110,11 +111,19 @@ private:
     // MSM's moments through the optimized quantization into RGBA16 (MomentWarp.h).
     bool quantized_ = true;
     bool quantized() const { return warp_ == Warp::Moments4 && quantized_; }
-    // What the programs are compiled for: the blur radius, half resolution, kernel and quantization.
-    std::tuple<int, bool, int, bool> programKey() const { return {blurRadius_, halfResolution_, blurKernel_, quantized()}; }
-    std::tuple<int, bool, int, bool> built_{-1, false, -1, false};  // programKey() when last built
+    // What the programs are compiled for: the blur radius, half resolution, kernel, quantization,
+    // MSAA, the compute blur and half floats.
+    using ProgramKey = std::tuple<int, bool, int, bool, bool, bool, bool>;
+    ProgramKey programKey() const { return {blurRadius_, halfResolution_, blurKernel_, quantized(), msaa_, computeBlur_, fp16_}; }
+    ProgramKey built_{-1, false, -1, false, false, false, false};  // programKey() when last built
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
     bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
+    // EVSM's box from a raw map of the warped depths alone, (p, n), squared in its pass
+    // (blur_box_evsm.frag): built for the box in 32-bit floats without MSAA or the compute blur,
+    // which read or write every moment.
+    bool firstOrderRaw() const;
+    GLenum rawFormat() const;  // of LightMoments::raw
+    glm::vec4 farRaw() const;  // what the raw map holds where no caster is
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;

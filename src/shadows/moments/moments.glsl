@@ -18,8 +18,12 @@ vec4 momentsOf(float z) {
     if (kWarp == kWarpVariance) return vec4(x, x * x, 0.0, 0.0);
     if (kWarp == kWarpExponential) return vec4(exp(uExponents.x * x), 0.0, 0.0, 0.0);
     if (kWarp == kWarpExponentialVariance2 || kWarp == kWarpExponentialVariance4) {
-        float p = exp(uExponents.x * x), n = -exp(-uExponents.y * x);
+        float p = exp(uExponents.x * x), n = kWarp == kWarpExponentialVariance4 ? -exp(-uExponents.y * x) : 0.0;
+#if RAW_FIRST_ORDER
+        return vec4(p, n, 0.0, 0.0);  // blur_box_evsm.frag squares them
+#else
         return vec4(p, p * p, n, n * n);
+#endif
     }
     vec4 b = vec4(t, t * t, t * t * t, t * t * t * t);
 #if MOMENTS_QUANTIZED

@@ -1,0 +1,17 @@
+#version 450 core
+// blur_box.frag's 2 x 2 box for EVSM, from a raw map of the warped depths alone (p = e^{c+ x} and,
+// EVSM4, n = -e^{-c- x}; MomentShadowMap::firstOrderRaw): one textureGather per warp fetches the
+// four texels around the corner p shares with p + (1, 1), and their squares are taken here. The
+// casters' raster writes two 32-bit channels instead of four, and each warp is fetched as one
+// channel: on llvmpipe, which filters channel by channel, EVSM4's raster and box cost about what
+// VSM's do (docs/measurements.md, stop 71).
+#include "src/shadows/moments/MomentWarp.h"
+layout(binding = 0) uniform sampler2D uSource;  // (p, n) per texel, clamped to its edges
+layout(location = 0) out vec4 outValue;
+
+void main() {
+    vec2 corner = (gl_FragCoord.xy + 0.5) / vec2(textureSize(uSource, 0));
+    vec4 p = textureGather(uSource, corner, 0);
+    vec4 n = MOMENT_WARP == kWarpExponentialVariance4 ? textureGather(uSource, corner, 1) : vec4(0.0);
+    outValue = 0.25 * vec4(dot(p, vec4(1.0)), dot(p, p), dot(n, vec4(1.0)), dot(n, n));
+}
