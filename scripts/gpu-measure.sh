@@ -56,6 +56,10 @@ step "goal ratios, glass scene" 60 penumbra bench scenes/glass.json --techniques
 # for none, default scene, hard) may cost more than the lookups they save. Compare the ratios.
 step "goal ratios without the split, default scene" 90 penumbra bench --techniques none,hard,cssm2 --shadow-everywhere --light-everywhere --tint-everywhere "${rounds[@]}" --out "$work/goals-default-whole"
 step "goal ratios without the split, glass scene" 60 penumbra bench scenes/glass.json --techniques hard,cssm2 --fixed-camera --shadow-everywhere --light-everywhere --tint-everywhere "${rounds[@]}" --out "$work/goals-glass-whole"
+# Where the GPU time of the open goals goes, part by part (stop 71's sub-pass clock: each debug
+# group bounded by glFinish, printed as "sub-pass" lines and in bench.json's sub_pass_wall_ms):
+# issue 11's cssm2 against hard on the glass scene, issue 15's hard against none.
+step "sub-passes, glass and default scenes" 60 bash -c "penumbra bench scenes/glass.json --techniques hard,cssm2 --fixed-camera --calibrate --frames 60 --no-images --out $work/sub-glass; penumbra bench --techniques none,hard --calibrate --frames 60 --no-images --out $work/sub-default"
 # Stop 68's two llvmpipe-made choices, in rounds with every map redrawn: the depth tile bounds,
 # made only for kept maps (on llvmpipe their pass cost more than the taps they saved; on a GPU the
 # pass is cheap), against `tile_bounds_every_frame=true`, which makes them as before; and the
