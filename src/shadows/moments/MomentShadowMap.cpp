@@ -268,7 +268,7 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     target.bind();
     glViewport(0, 0, m.resolution, m.resolution);
     glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
-    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();
+    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();  // the raw map may hold EVSM's (p, n) alone
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);
