@@ -31,19 +31,23 @@ bool MomentShadowMap::boxKernel(int radius, bool halfResolution, int kernel) {
 
 bool MomentShadowMap::firstOrderRaw() const {
     const bool msaa = std::get<4>(built_), compute = std::get<5>(built_), fp16 = std::get<6>(built_);
-    // Half floats would hold p rounded and its square taken of that: twice the rounding of p^2
-    // stored (MomentComputeBlur with fp16, 2 values of the map over 2^-9 apart).
-    return (warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4) && boxBlur() && !msaa && !compute && !fp16;
+    // Half floats would hold EVSM's p rounded and its square taken of that: twice the rounding of
+    // p^2 stored (MomentComputeBlur with fp16, 2 values of the map over 2^-9 apart). MSM's t is
+    // held in 32 bits whatever the moments' format.
+    const bool evsm = warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4;
+    return (warp_ == Warp::Moments4 || (evsm && !fp16)) && boxBlur() && !msaa && !compute;
 }
 
 GLenum MomentShadowMap::rawFormat() const {
     if (!firstOrderRaw()) return format();
-    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;
+    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;  // (p, n), p or t
 }
 
 glm::vec4 MomentShadowMap::farRaw() const {
+    if (!firstOrderRaw()) return farMoments();
+    if (warp_ == Warp::Moments4) return {1.0f, 0.0f, 0.0f, 0.0f};  // t at the far plane
     const glm::vec4 far = farMoments();
-    return firstOrderRaw() ? glm::vec4(far.x, far.z, 0.0f, 0.0f) : far;
+    return {far.x, far.z, 0.0f, 0.0f};
 }
 
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
@@ -66,7 +70,7 @@ void MomentShadowMap::buildPrograms() {
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     // The box in one bilinear fetch; the Gaussian of radius 1 in one pass of four, larger ones in two
     // separable passes (see update).
-    const char* blur = box && firstOrderRaw() ? "src/shadows/moments/blur_box_evsm.frag"
+    const char* blur = box && firstOrderRaw() ? "src/shadows/moments/blur_box_first_order.frag"
                        : box              ? "src/shadows/moments/blur_box.frag"
                        : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
                                    : "src/shadows/moments/blur.frag";
@@ -268,7 +272,7 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     target.bind();
     glViewport(0, 0, m.resolution, m.resolution);
     glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
-    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();  // the raw map may hold EVSM's (p, n) alone
+    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();  // the raw map may hold first-order values alone
     const float farDepth = 1.0f;
     glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);

@@ -20,11 +20,14 @@ vec4 momentsOf(float z) {
     if (kWarp == kWarpExponentialVariance2 || kWarp == kWarpExponentialVariance4) {
         float p = exp(uExponents.x * x), n = kWarp == kWarpExponentialVariance4 ? -exp(-uExponents.y * x) : 0.0;
 #if RAW_FIRST_ORDER
-        return vec4(p, n, 0.0, 0.0);  // blur_box_evsm.frag squares them
+        return vec4(p, n, 0.0, 0.0);  // blur_box_first_order.frag squares them
 #else
         return vec4(p, p * p, n, n * n);
 #endif
     }
+#if RAW_FIRST_ORDER
+    return vec4(t, 0.0, 0.0, 0.0);  // blur_box_first_order.frag raises it to its powers
+#endif
     vec4 b = vec4(t, t * t, t * t * t, t * t * t * t);
 #if MOMENTS_QUANTIZED
     return kMomentsQuantize * b + kMomentsQuantizeOffset;
