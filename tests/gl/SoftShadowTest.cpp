@@ -453,7 +453,7 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Warps, MomentComputeBlur,
-                         ::testing::Values("vsm", "vsm:blur_kernel=gaussian", "esm", "evsm2", "evsm4", "evsm4:fp16=true", "msm", "msm:quantized=false", "vsm:fp16=true"),
+                         ::testing::Values("vsm", "vsm:blur_kernel=gaussian", "esm", "esm:fp16=true", "evsm2", "evsm4", "evsm4:fp16=true", "msm", "msm:quantized=false", "vsm:fp16=true"),
                          [](const auto& info) { return testNameOf(info.param); });
 
 // MSM's moments through the optimized quantization (Peters & Klein 2015, section 4.3) into RGBA16

@@ -30,24 +30,21 @@ bool MomentShadowMap::boxKernel(int radius, bool halfResolution, int kernel) {
 }
 
 bool MomentShadowMap::firstOrderRaw() const {
-    const bool msaa = std::get<4>(built_), compute = std::get<5>(built_), fp16 = std::get<6>(built_);
-    // Half floats would hold EVSM's p rounded and its square taken of that: twice the rounding of
-    // p^2 stored (MomentComputeBlur with fp16, 2 values of the map over 2^-9 apart). MSM's t is
-    // held in 32 bits whatever the moments' format.
-    const bool evsm = warp_ == Warp::ExponentialVariance2 || warp_ == Warp::ExponentialVariance4;
-    return (warp_ == Warp::Moments4 || (evsm && !fp16)) && boxBlur() && !msaa && !compute;
+    const bool msaa = std::get<4>(built_), compute = std::get<5>(built_);
+    return boxBlur() && !msaa && !compute;
 }
 
 GLenum MomentShadowMap::rawFormat() const {
     if (!firstOrderRaw()) return format();
-    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;  // (p, n), p or t
+    // In 32 bits whatever the moments' format: squares of half floats would round twice.
+    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;
 }
 
 glm::vec4 MomentShadowMap::farRaw() const {
     if (!firstOrderRaw()) return farMoments();
     if (warp_ == Warp::Moments4) return {1.0f, 0.0f, 0.0f, 0.0f};  // t at the far plane
-    const glm::vec4 far = farMoments();
-    return {far.x, far.z, 0.0f, 0.0f};
+    const glm::vec4 far = farMoments();  // x or e^{c+ x} or p first, n third
+    return {far.x, warp_ == Warp::ExponentialVariance4 ? far.z : 0.0f, 0.0f, 0.0f};
 }
 
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,

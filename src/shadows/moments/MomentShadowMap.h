@@ -15,8 +15,8 @@ namespace penumbra::shadows {
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
 // moments are drawn straight into a map of their own resolution with its own depth buffer
 // (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a
-// 2 x 2 box by default, or a Gaussian; EVSM's and MSM's box raise the first-order values the
-// raster drew to their moments, blur_box_first_order.frag) and optionally mip-mapped for trilinear/anisotropic
+// 2 x 2 box by default, from the first-order values the raster drew, blur_box_first_order.frag;
+// or a Gaussian) and optionally mip-mapped for trilinear/anisotropic
 // filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
 // depth is drawn only under the translucent casters, as its depth test
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
@@ -112,15 +112,15 @@ private:
     bool quantized_ = true;
     bool quantized() const { return warp_ == Warp::Moments4 && quantized_; }
     // What the programs are compiled for: the blur radius, half resolution, kernel, quantization,
-    // MSAA, the compute blur and half floats.
-    using ProgramKey = std::tuple<int, bool, int, bool, bool, bool, bool>;
-    ProgramKey programKey() const { return {blurRadius_, halfResolution_, blurKernel_, quantized(), msaa_, computeBlur_, fp16_}; }
-    ProgramKey built_{-1, false, -1, false, false, false, false};  // programKey() when last built
+    // MSAA and the compute blur.
+    using ProgramKey = std::tuple<int, bool, int, bool, bool, bool>;
+    ProgramKey programKey() const { return {blurRadius_, halfResolution_, blurKernel_, quantized(), msaa_, computeBlur_}; }
+    ProgramKey built_{-1, false, -1, false, false, false};  // programKey() when last built
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
     bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
-    // The box from a raw map of first-order values alone, EVSM's warped depths (p, n) or MSM's t,
-    // raised to their moments in its pass (blur_box_first_order.frag): built for the box without
-    // MSAA or the compute blur, which read or write every moment (EVSM in 32-bit floats only).
+    // The box from a raw map of first-order values alone (VSM's x, ESM's e^{c x}, EVSM's (p, n),
+    // MSM's t), raised to their moments in its pass (blur_box_first_order.frag): built for the
+    // box without MSAA or the compute blur, which read or write every moment.
     bool firstOrderRaw() const;
     GLenum rawFormat() const;  // of LightMoments::raw
     glm::vec4 farRaw() const;  // what the raw map holds where no caster is
