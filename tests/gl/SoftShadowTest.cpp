@@ -452,6 +452,29 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
     EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
 }
 
+// The raw map holds first-order values for the box and every moment with MSAA or the compute blur
+// (MomentShadowMap::firstOrderRaw): switched on a live renderer and back, the programs and the raw
+// map are made again, and each picture equals a fresh renderer's.
+TEST_P(MomentComputeBlur, SwitchedOnALiveRendererAndBackMatchesFreshOnes) {
+    scene::Scene s = sceneFromJson(kThreeLightsScene);
+    const std::string technique = GetParam();
+    auto render = [&](render::Renderer& r) {
+        render::OffscreenTarget target(96, 96);
+        r.render(0.0f, s.camera, 96, 96, target.framebuffer());
+        return r.readLinear();
+    };
+    render::Renderer live(s, optionsFor(technique));
+    render(live);
+    for (const char* option : {"compute_blur", "msaa"}) {
+        shadows::applyParameters(live.technique().parameters(), {{option, "true"}});
+        render::Renderer fresh(s, optionsFor(technique + ":" + option + "=true"));
+        EXPECT_EQ(differingPixels(render(live), render(fresh)), 0u) << technique << ", " << option << " on";
+        shadows::applyParameters(live.technique().parameters(), {{option, "false"}});
+        render::Renderer back(s, optionsFor(technique));
+        EXPECT_EQ(differingPixels(render(live), render(back)), 0u) << technique << ", " << option << " off again";
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Warps, MomentComputeBlur,
                          ::testing::Values("vsm", "vsm:blur_kernel=gaussian", "esm", "esm:fp16=true", "evsm2", "evsm4", "evsm4:fp16=true", "msm", "msm:quantized=false", "vsm:fp16=true"),
                          [](const auto& info) { return testNameOf(info.param); });

@@ -235,7 +235,7 @@ TexelRect MomentShadowMap::changedTexels(std::size_t i, std::size_t face, const 
                                      : util::Digest()
                                            .add(frame.casterDigest({Casters::Opaque, vp, light, Motion::Still}), vp,
                                                 (*frame.lights)[i].shadow.polygonOffset, exponents(), space.near, space.far,
-                                                space.perspective, blurRadius_, blurKernel_)
+                                                space.perspective, blurRadius_, blurKernel_, computeBlur_)
                                            .value();
     const TexelRect moving = texelRect(frame.casterBounds({Casters::Opaque, vp, light, Motion::Moving}), vp, m.resolution);
     return m.derived[face].changed(key, moving, m.resolution);
