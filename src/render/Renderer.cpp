@@ -883,11 +883,14 @@ std::vector<std::uint32_t> Renderer::lightsShadowingNothing(const std::vector<Dr
     for (const scene::Light& light : scene_.lights) digest.add(light.shadow.polygonOffset);
     for (const Draw& d : draws) digest.add(d.object, d.mesh, d.part, d.model, d.translucent, d.castsShadow);
     if (digest.value() == shadowsNothingKey_ && shadowsNothing_.size() == draws.size()) return shadowsNothing_;
+    std::vector<OrientedBox> boxes;  // each draw's, once: every caster and light tests them all
+    boxes.reserve(draws.size());
+    for (const Draw& d : draws) boxes.emplace_back(d.meshBounds, d.model);
     for (std::size_t c = 0; c < draws.size(); ++c) {
         const Draw& d = draws[c];
         // A solid's inner faces, seen from inside, are lit through it: only flat parts qualify.
         if (!d.castsShadow || d.translucent || !d.selfShadowFree || d.solid) continue;
-        const OrientedBox caster(d.meshBounds, d.model);
+        const OrientedBox& caster = boxes[c];
         // Its plane in the world (planes map by the inverse transpose); Mesh::partPlane's flatness
         // tolerance (1e-4 of the part's size) lies within flatCasterShadowsNone's surface tolerance.
         std::optional<glm::vec4> plane;
@@ -901,7 +904,7 @@ std::vector<std::uint32_t> Renderer::lightsShadowingNothing(const std::vector<Dr
             bool shadows = false;
             for (std::size_t r = 0; r < draws.size() && !shadows; ++r) {
                 if (r == c) continue;
-                const OrientedBox receiver(draws[r].meshBounds, draws[r].model);
+                const OrientedBox& receiver = boxes[r];
                 // (An offset that pulls the caster's depths towards the light voids the plane's side.)
                 if (plane && opaqueReach >= 0.0f && flatCasterShadowsNone(light, *plane, receiver, pad, opaqueReach)) continue;
                 shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)

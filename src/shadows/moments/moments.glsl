@@ -19,8 +19,7 @@ vec2 firstOrderOf(float z) {
     float t = uPerspective != 0 ? perspectiveLinearDepth(z, uNear, uFar) : z;
     float x = 2.0 * t - 1.0;
     if (kWarp == kWarpVariance) return vec2(x, 0.0);
-    if (kWarp == kWarpExponential) return vec2(exp(uExponents.x * x), 0.0);
-    if (kWarp == kWarpExponentialVariance2) return vec2(exp(uExponents.x * x), 0.0);
+    if (kWarp == kWarpExponential || kWarp == kWarpExponentialVariance2) return vec2(exp(uExponents.x * x), 0.0);
     if (kWarp == kWarpExponentialVariance4) return vec2(exp(uExponents.x * x), -exp(-uExponents.y * x));
     return vec2(t, 0.0);
 }
