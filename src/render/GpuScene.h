@@ -41,7 +41,7 @@ struct Draw {
     // The solid's case holds seen from outside only (its inner faces lit through it otherwise).
     bool selfShadowFree = false;
     // A flat part that bounds no solid: its plane (unit normal, offset) in the mesh's space, under
-    // `model` (Renderer::lightsShadowingNothing).
+    // `model` (Renderer::flatCasterNeeds).
     std::optional<glm::vec4> plane;
     scene::Bounds worldBounds;  // the part's mesh bounds at this frame (shadow-pass culling)
     scene::Bounds meshBounds;   // the same in the mesh's own space, under `model` (render/TintReach.h's OrientedBox)

@@ -32,6 +32,11 @@ static void configure(shadows::ShadowTechnique& technique, const RenderOptions& 
                                 "'; its parameters: " + (known.empty() ? "none" : known));
 }
 
+// How many texels around a receiver's own a lookup may read in `light`'s map: the technique's
+// reach (ShadowTechnique::shadowReachTexels), the normal offset, which moves the lookup that many
+// texels besides, and 2 for rounding.
+static float lookupPadTexels(float reach, const gpu::LightData& light) { return reach + light.shadow.z + 2.0f; }
+
 static gl::Program fullscreenProgram(const char* fragment, std::vector<std::string> defines = {}) {
     return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment, .defines = std::move(defines)});
 }
@@ -248,13 +253,19 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return boxes;
         };
         shadowTriangles_.assign(scene_.lights.size(), 0);
-        const std::vector<std::uint32_t> shadowsNothing = lightsShadowingNothing(draws, block);
+        const std::vector<FlatCasterNeed> flatNeeds = flatCasterNeeds(draws, block);
+        // The receivers a flat part is drawn for in this selection's light's maps (none: drawn whole).
+        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const std::vector<std::size_t>* {
+            const auto& near = flatNeeds[index].near;
+            const auto light = static_cast<std::size_t>(selection.light);
+            return selection.light >= 0 && light < near.size() && !near[light].empty() ? &near[light] : nullptr;
+        };
         const auto selected = [&](const Draw& d, const shadows::CasterSelection& selection) {
             using shadows::Motion;
             const auto index = static_cast<std::size_t>(&d - draws.data());  // d is one of draws
             return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
                    (selection.motion == Motion::Any || d.moving == (selection.motion == Motion::Moving)) &&
-                   !(selection.light >= 0 && (shadowsNothing[index] >> selection.light & 1u)) &&
+                   !(selection.light >= 0 && (flatNeeds[index].nothing >> selection.light & 1u)) &&
                    !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
         };
         frame.casterBounds = [&](const shadows::CasterSelection& selection) {
@@ -271,8 +282,13 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         };
         frame.casterDigest = [&](const shadows::CasterSelection& selection) {
             util::Digest digest;
-            for (const Draw& d : draws)
-                if (selected(d, selection)) digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
+            for (const Draw& d : draws) {
+                if (!selected(d, selection)) continue;
+                digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
+                // A flat part drawn only near its receivers holds what they were when it was drawn.
+                if (const auto* near = nearOf(static_cast<std::size_t>(&d - draws.data()), selection))
+                    for (std::size_t r : *near) digest.add(r, draws[r].model);
+            }
             return digest.value();
         };
         frame.reuseStillCasters = options_.reuseStillCasters;
@@ -290,8 +306,22 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
                 cullBackFacesOfSolid(d, away != GL_NONE, through);
+                // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds).
+                const auto* near = selection.map && selection.lightViewProj ? nearOf(static_cast<std::size_t>(&d - draws.data()), selection) : nullptr;
+                if (near) {
+                    const float pad = lookupPadTexels(technique_->shadowReachTexels(), block.lights[selection.light]);
+                    const glm::ivec4 t = nearTexels(draws, *near, selection, pad);
+                    if (t.x >= t.z || t.y >= t.w) continue;
+                    glEnable(GL_SCISSOR_TEST);
+                    glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
+                }
                 const std::size_t drawn = selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
                                                          : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
+                if (near) {  // the pass's own scissor back
+                    const glm::ivec4 t = selection.map->texels;
+                    glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
+                    if (!selection.map->scissored) glDisable(GL_SCISSOR_TEST);
+                }
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
                     shadowTriangles_[static_cast<std::size_t>(selection.light)] += drawn;
             }
@@ -657,8 +687,7 @@ ReceiverFootprints footprintsOf(const Draw& d, const PixelRect& own, const std::
     for (int l = 0; l < block.count.x; ++l) {
         const gpu::LightData& light = block.lights[l];
         if (light.cone.w < 0.0f) continue;  // casts no shadow, so no colour either
-        // The normal offset moves the receiver's lookup that many texels besides.
-        const float pad = reach + light.shadow.z + 2.0f;
+        const float pad = lookupPadTexels(reach, light);
         // Whether an opaque receiver is behind every layer is the behind-layers build's test alone
         // (colouredByTint's behindEveryLayer: the bilinear tint at its texel, 2 x 2 texels), so
         // only casters that reach those texels count there; the whole lookup's reach (`pad`)
@@ -872,20 +901,23 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
     }
 }
 
-std::vector<std::uint32_t> Renderer::lightsShadowingNothing(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
-    std::vector<std::uint32_t> nothing(draws.size(), 0u);
+std::vector<Renderer::FlatCasterNeed> Renderer::flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
+    std::vector<FlatCasterNeed> needs(draws.size());
     const float reach = technique_->shadowReachTexels(), depthReach = technique_->shadowReachDepth();
-    if (!options_.onlyCastersThatShadow || reach < 0.0f) return nothing;
+    if (!options_.onlyCastersThatShadow || reach < 0.0f) return needs;
     // Kept while no part moved and the lights, their offsets and the reach stayed
     // (scenes/street.json: 0.87 ms a frame for its 215 parts, none of which shadows nothing).
     util::Digest digest;
     digest.add(reach, depthReach, block);
     for (const scene::Light& light : scene_.lights) digest.add(light.shadow.polygonOffset);
-    for (const Draw& d : draws) digest.add(d.object, d.mesh, d.part, d.model, d.translucent, d.castsShadow);
-    if (digest.value() == shadowsNothingKey_ && shadowsNothing_.size() == draws.size()) return shadowsNothing_;
+    for (const Draw& d : draws) digest.add(d.object, d.mesh, d.part, d.model, d.translucent, d.castsShadow, d.moving);
+    if (digest.value() == flatCasterNeedsKey_ && flatCasterNeeds_.size() == draws.size()) return flatCasterNeeds_;
     std::vector<OrientedBox> boxes;  // each draw's, once: every caster and light tests them all
     boxes.reserve(draws.size());
     for (const Draw& d : draws) boxes.emplace_back(d.meshBounds, d.model);
+    // Past this many receivers a part is drawn whole: its scissored draws would cost more than
+    // the texels they leave out.
+    constexpr std::size_t kMostNear = 8;
     for (std::size_t c = 0; c < draws.size(); ++c) {
         const Draw& d = draws[c];
         // A solid's inner faces, seen from inside, are lit through it: only flat parts qualify.
@@ -895,28 +927,59 @@ std::vector<std::uint32_t> Renderer::lightsShadowingNothing(const std::vector<Dr
         // tolerance (1e-4 of the part's size) lies within flatCasterShadowsNone's surface tolerance.
         std::optional<glm::vec4> plane;
         if (d.plane) plane = glm::transpose(glm::inverse(d.model)) * *d.plane;
+        FlatCasterNeed& need = needs[c];
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // no map
-            const float pad = reach + light.shadow.z + 2.0f;  // as addShadowReach's
+            const float pad = lookupPadTexels(reach, light);
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
             const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
-            bool shadows = false;
-            for (std::size_t r = 0; r < draws.size() && !shadows; ++r) {
+            std::vector<std::size_t> shadowed;
+            bool whole = false;  // a receiver that moves, or too many of them
+            for (std::size_t r = 0; r < draws.size() && !whole; ++r) {
                 if (r == c) continue;
                 const OrientedBox& receiver = boxes[r];
                 // (An offset that pulls the caster's depths towards the light voids the plane's side.)
                 if (plane && opaqueReach >= 0.0f && flatCasterShadowsNone(light, *plane, receiver, pad, opaqueReach)) continue;
-                shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)
-                                                : shadowFootprint(light, caster, receiver, pad))
-                               .empty();
+                const bool shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)
+                                                           : shadowFootprint(light, caster, receiver, pad))
+                                          .empty();
+                if (!shadows) continue;
+                shadowed.push_back(r);
+                // A light's kept still map holds the part as drawn for the receivers of that frame.
+                whole = draws[r].moving || shadowed.size() > kMostNear;
             }
-            if (!shadows) nothing[c] |= 1u << static_cast<unsigned>(l);
+            if (shadowed.empty()) {
+                need.nothing |= 1u << static_cast<unsigned>(l);
+            } else if (!whole) {
+                need.near.resize(static_cast<std::size_t>(block.count.x));
+                need.near[static_cast<std::size_t>(l)] = std::move(shadowed);
+            }
         }
     }
-    shadowsNothingKey_ = digest.value();
-    shadowsNothing_ = nothing;
-    return nothing;
+    flatCasterNeedsKey_ = digest.value();
+    flatCasterNeeds_ = needs;
+    return needs;
+}
+
+glm::ivec4 Renderer::nearTexels(const std::vector<Draw>& draws, const std::vector<std::size_t>& near,
+                                const shadows::CasterSelection& selection, float padTexels) const {
+    const shadows::CasterMap& map = *selection.map;
+    const int pad = static_cast<int>(std::ceil(padTexels));
+    glm::ivec4 texels(0);
+    bool any = false;
+    for (std::size_t r : near) {
+        const OrientedBox box(draws[r].meshBounds, draws[r].model);
+        const glm::ivec4 t = map.texelsOf(box.corners, *selection.lightViewProj);
+        if (t.x >= t.z || t.y >= t.w) continue;
+        texels = any ? glm::ivec4(glm::min(glm::ivec2(texels), glm::ivec2(t)), glm::max(glm::ivec2(texels.z, texels.w), glm::ivec2(t.z, t.w)))
+                     : t;
+        any = true;
+    }
+    if (!any) return glm::ivec4(0);
+    // Grown by the reach, within what the pass draws.
+    return {std::max(texels.x - pad, map.texels.x), std::max(texels.y - pad, map.texels.y), std::min(texels.z + pad, map.texels.z),
+            std::min(texels.w + pad, map.texels.w)};
 }
 
 // Where no other caster's shadow volume reaches an opaque receiver, a light's map holds the
@@ -963,7 +1026,7 @@ void Renderer::addShadowReach(TintSplit& split, const std::vector<Draw>& draws, 
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // no map, no lookup
-            const float pad = reach + light.shadow.z + 2.0f;  // as footprintsOf's: the normal offset and rounding
+            const float pad = lookupPadTexels(reach, light);
             // A polygon offset that pulls depths towards the light could put a caster in front of
             // its own box in the map: then its volume counts on both sides of it.
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;

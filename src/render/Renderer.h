@@ -104,7 +104,7 @@ struct RenderOptions {
     bool shadowOnlyWhereCast = true;
     // Leave out of a light's maps the flat opaque casters whose shadow can fall on no other surface
     // (a ground under everything), with those techniques: the same pixels, less of the maps drawn
-    // (Renderer::lightsShadowingNothing). false (`--every-caster`) draws every caster.
+    // (Renderer::flatCasterNeeds). false (`--every-caster`) draws every caster.
     bool onlyCastersThatShadow = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
@@ -241,14 +241,26 @@ private:
     // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
     void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                        int width, int height) const;
-    // Per draw, a bit per light whose maps may leave the draw out: an opaque flat part (no solid)
-    // that shadows none of its own points, whose shadow footprint on every other draw is empty
-    // (as addShadowReach pads it), with a technique that bounds its lookup's reach. Its map texels
-    // then hold what lies behind it, and every lookup answers as before: receivers' own texels
-    // count as lit, and no other receiver lies behind the part within that reach.
-    std::vector<std::uint32_t> lightsShadowingNothing(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
-    mutable std::uint64_t shadowsNothingKey_ = 0;  // lightsShadowingNothing's last answer and what it was of
-    mutable std::vector<std::uint32_t> shadowsNothing_;
+    // What a light's maps need of an opaque flat part (no solid) that shadows none of its own
+    // points, with a technique that bounds its lookup's reach. Its map texels hold what lies
+    // behind it where it is left out, and every lookup answers as before: receivers' own texels
+    // count as lit, and no receiver it is not drawn for lies behind it within that reach.
+    struct FlatCasterNeed {
+        // A bit per light whose maps leave the part out: its shadow footprint on every other draw
+        // is empty (as addShadowReach pads it).
+        std::uint32_t nothing = 0;
+        // Per light (empty where the part is drawn whole or not at all): the still draws its
+        // footprint reaches, a ground carrying them. The part is drawn only where their lookups
+        // read, their texels and the lookup's reach around them (drawCasters' scissor).
+        std::vector<std::vector<std::size_t>> near;
+    };
+    std::vector<FlatCasterNeed> flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
+    mutable std::uint64_t flatCasterNeedsKey_ = 0;  // flatCasterNeeds' last answer and what it was of
+    mutable std::vector<FlatCasterNeed> flatCasterNeeds_;
+    // The texels of a depth pass's map (CasterSelection::map) where a flat part is drawn for `near`'s
+    // receivers: their boxes' texels grown by the lookup's reach, within the pass's own texels.
+    glm::ivec4 nearTexels(const std::vector<Draw>& draws, const std::vector<std::size_t>& near,
+                          const shadows::CasterSelection& selection, float padTexels) const;
     // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
     void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                         int width, int height) const;

@@ -22,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,18 @@ enum class Motion { Any, Still, Moving };
 // a solid (render::Draw::solid) is one of its front faces, so such a pass culls the faces a solid
 // turns away from lightViewProj: the map is the same, at about half the raster work. Passes that
 // flatten casters, or colour them through every face, draw both faces.
+// `map`: the square map a depth pass draws through lightViewProj, where it has one view of it
+// (nullopt: drawCasters draws each caster whole). With it, a ground carrying other casters is
+// drawn only where their lookups read it (render::Renderer::flatCasterNeeds).
+struct CasterMap {
+    int resolution = 0;
+    glm::ivec4 texels{0};    // (x0, y0, x1, y1), exclusive: what the pass draws, its scissor if `scissored`
+    bool scissored = false;  // else the scissor test is off
+    // The texels that world `points` seen through `viewProj` cover in this map: their projections'
+    // bounding texels, or the whole map where one lies behind the eye (MapRegion.cpp).
+    glm::ivec4 texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const;
+};
+
 struct CasterSelection {
     Casters casters = Casters::Opaque;
     std::optional<glm::mat4> cull;
@@ -53,6 +66,7 @@ struct CasterSelection {
     Motion motion = Motion::Any;
     std::optional<glm::mat4> lightViewProj;
     bool nearestDepthOnly = false;
+    std::optional<CasterMap> map;
 };
 
 // The program each caster draw uses: `plain` for materials whose texture the pass need not

@@ -101,6 +101,62 @@ TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
         }
 }
 
+// A ground carrying casters is drawn into a sun's maps only where their lookups read it: the
+// texels of the boxes it may shadow, grown by the lookup's reach (Renderer::flatCasterNeeds). The
+// same pixels as `--every-caster`, the same triangles drawn, and far fewer texels of depth: with
+// every caster the ground fills the map; here it fills the box's corner of it. A second box far
+// across the ground grows what is drawn. Every bounded-reach technique, layered maps too.
+TEST(Culling, AGroundCarryingCastersIsDrawnOnlyWhereTheirLookupsRead) {
+    const auto sceneWith = [](const std::string& boxes) {
+        return sceneFromJson(R"({
+          "camera": { "position": [6, 9, 10], "target": [0, 1, 0], "fov_deg": 45 },
+          "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
+          "objects": [ { "shape": "plane", "size": [12, 12] },
+                       { "shape": "sphere", "radius": 0.5, "position": [-1, 3, 0] }, )" + boxes + " ] }");
+    };
+    // The share of the sun's depth texels that hold a surface (under 1), over every depth view
+    // (a cascaded or warped map's layers too), and the visibility picture.
+    const auto render = [](scene::Scene& s, const std::string& technique, bool everyCaster, std::vector<float>& visibility) {
+        render::RenderOptions options;
+        options.technique = technique;
+        options.output = OutputMode::Visibility;
+        options.onlyCastersThatShadow = !everyCaster;
+        render::Renderer renderer(s, options);
+        render::OffscreenTarget target(96, 64);
+        renderer.render(0.0f, s.camera, 96, 64, target.framebuffer());
+        visibility = renderer.readLinear();
+        std::size_t surface = 0, texels = 0;
+        for (const shadows::DebugView& view : renderer.technique().debugViews()) {
+            if (!view.depth) continue;
+            const std::vector<float> depth = textureLevels(view);
+            texels += depth.size();
+            for (float z : depth) surface += z < 1.0f;
+        }
+        return texels ? static_cast<double>(surface) / static_cast<double>(texels) : -1.0;
+    };
+    const std::string resting = R"({ "shape": "box", "position": [1.5, 0.5, 1.5] })";
+    const std::string farther = R"(, { "shape": "box", "position": [-3.5, 0.5, -3.5] })";
+    for (const char* technique : {"hard", "pcf-poisson16", "pcss", "cssm2", "distance", "cascaded", "lispsm"}) {
+        std::vector<float> all, near;
+        scene::Scene one = sceneWith(resting);
+        const double every = render(one, technique, true, all);
+        const double oneBox = render(one, technique, false, near);
+        EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << technique << ", one box";
+        scene::Scene two = sceneWith(resting + farther);
+        const double twoBoxes = render(two, technique, false, near);
+        render(two, technique, true, all);
+        EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << technique << ", two boxes";
+        // A cascaded or warped layer draws only the texels its receivers read, and leaves the rest
+        // as it was: its texels are not counted.
+        if (std::string(technique) == "cascaded" || std::string(technique) == "lispsm") continue;
+        EXPECT_GT(every, 0.4) << technique << ": the ground fills the light's box, about the ground";
+        EXPECT_LT(oneBox, 0.25 * every) << technique << ": the ground only around the box";
+        EXPECT_GT(oneBox, 0.0) << technique << ": the box and the ground under it";
+        EXPECT_GT(twoBoxes, oneBox) << technique << ": the ground around both boxes";
+        EXPECT_LT(twoBoxes, every) << technique << ": still not the whole ground";
+    }
+}
+
 // A live renderer decides it again when the scene changes: a sphere floating over a ground leaves
 // the ground out; moved down to rest on it, the ground is drawn; floated up again, left out; with a
 // polygon offset that pulls depths towards the light, drawn. (The answer is kept between frames

@@ -239,6 +239,11 @@ TEST_P(KeptMapTriangles, UnchangedMapsDrawNothingAndAnimatedCastersAlone) {
     EXPECT_EQ(pair.reusing.shadowTriangles()[1], sphereTriangles) << "the sun draws the sphere alone; the pane's map is kept";
 
     sphere.animation.position = scene::Track({{0.0f, {1.5f, 2.5f, 0.0f}}, {1.0f, {1.6f, 2.5f, 0.0f}}});  // above the pane, between it and the sun
+    // The sphere has left the ground's reach: the ground, drawn whole into the sun's still map
+    // while a moving caster came within it, is now drawn only around what rests on it
+    // (Renderer::flatCasterNeeds), and the still map once again.
+    pair.render(s, 0.0f);
+    EXPECT_GT(pair.reusing.shadowTriangles()[1], sphereTriangles + pane) << "the still map drawn again once";
     for (int frame = 0; frame < 2; ++frame) {
         pair.render(s, 0.0f);
         EXPECT_EQ(pair.reusing.shadowTriangles()[1], sphereTriangles + pane)

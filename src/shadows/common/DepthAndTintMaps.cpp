@@ -171,7 +171,8 @@ void DepthAndTintMaps::renderOpaque(const ShadowFrame& frame, LightMaps& m, std:
     const auto drawInto = [&](const gl::Framebuffer& fb, Motion motion) {
         fb.bind();
         glClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
-        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp, true});
+        frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, motion, vp, true,
+                                          CasterMap{m.resolution, region.texels, region.cropped}});
     };
     const std::uint64_t overStill = std::exchange(m.depthOverStill[face], 0);
     if (stillKey == 0) {  // nothing reused: every caster, every frame
@@ -209,9 +210,10 @@ void DepthAndTintMaps::drawMovingOver(const ShadowFrame& frame, LightMaps& m, st
     const glm::mat4& vp = (*frame.lightSpaces)[static_cast<std::size_t>(light)].viewProj[face];
     const glm::vec2 po = (*frame.lights)[static_cast<std::size_t>(light)].shadow.polygonOffset;
     const gl::ScopedPassState state(gl::PassState::depthOnly().withPolygonOffset(po.x, po.y));
-    const ScopedScissor inside(region.cropped ? region.texels : m.movingTexels[face]);
+    const TexelRect texels = region.cropped ? region.texels : m.movingTexels[face];
+    const ScopedScissor inside(texels);
     m.depthFaces[face].bind();
-    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true});
+    frame.drawCasters(depthProgram_, {Casters::Opaque, region.cull, light, Motion::Moving, vp, true, CasterMap{m.resolution, texels, true}});
 }
 
 void DepthAndTintMaps::setFiltering(GLenum filter) {

@@ -22,9 +22,10 @@ struct LayeredDepthMap::LayerPass {
     int room;
     bool animated;  // the scene animates casters: layers track what their still casters drew
 
-    CasterSelection selection(const TexelRect& rect, Motion motion) const {
+    // `scissored`: the pass draws `rect` under its scissor (else the whole layer, no scissor).
+    CasterSelection selection(const TexelRect& rect, Motion motion, bool scissored = false) const {
         return {Casters::Opaque, cropped && !isEmpty(rect) ? cropTo(rect, res) * viewProj : viewProj, frame.slots->sun, motion, viewProj,
-                true};
+                true, CasterMap{res, scissored ? rect : TexelRect(0, 0, res, res), scissored}};
     }
     std::uint64_t keyOf(const TexelRect& rect, Motion motion) const {
         return reuse ? util::Digest().add(frame.casterDigest(selection(rect, motion)), viewProj, clipPlane, light.shadow.polygonOffset, rect, motion).value()
@@ -182,14 +183,15 @@ void LayeredDepthMap::restoreStill(std::size_t l, const TexelRect& rect) {
 // when the layer is cropped or over others' depth (`clear` false: drawn over what is there).
 void LayeredDepthMap::drawInto(const gl::Framebuffer& target, const LayerPass& pass, const TexelRect& rect, Motion motion, bool clear) {
     if (isEmpty(rect)) return;  // nothing reads there: its stale texels stay unread
-    const ScopedScissor scissor(rect, pass.cropped || !clear);
+    const bool scissored = pass.cropped || !clear;
+    const ScopedScissor scissor(rect, scissored);
     if (clear) target.beginDepthPass(pass.res, pass.res);
     else {
         target.bind();
         glViewport(0, 0, pass.res, pass.res);
     }
     casters_.set("uClipPlane", pass.clipPlane);
-    pass.frame.drawCasters(casters_, pass.selection(rect, motion));
+    pass.frame.drawCasters(casters_, pass.selection(rect, motion, scissored));
 }
 
 DebugView LayeredDepthMap::debugView(const std::string& label) const {

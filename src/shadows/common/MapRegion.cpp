@@ -1,5 +1,7 @@
 #include "shadows/common/MapRegion.h"
 
+#include "shadows/ShadowTechnique.h"
+
 #include <array>
 
 namespace penumbra::shadows {
@@ -29,6 +31,10 @@ TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj
         hi = glm::max(hi, ndc);
     }
     return texelsOf(lo, hi, resolution);
+}
+
+glm::ivec4 CasterMap::texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const {
+    return texelRect(points, viewProj, resolution);
 }
 
 // A perspective light sees only the box's part in front of its eye: a convex solid whose corners
