@@ -254,7 +254,8 @@ private:
         // read, their texels and the lookup's reach around them (drawCasters' scissor).
         std::vector<std::vector<std::size_t>> near;
     };
-    std::vector<FlatCasterNeed> flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
+    // (Kept, and answered again, while nothing it depends on changed.)
+    const std::vector<FlatCasterNeed>& flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
     mutable std::uint64_t flatCasterNeedsKey_ = 0;  // flatCasterNeeds' last answer and what it was of
     mutable std::vector<FlatCasterNeed> flatCasterNeeds_;
     // The texels of a depth pass's map (CasterSelection::map) where a flat part is drawn for `near`'s
