@@ -936,6 +936,10 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
         for (int l = 0; l < block.count.x; ++l) {
             const gpu::LightData& light = block.lights[l];
             if (light.cone.w < 0.0f) continue;  // no map
+            // A point light's cube faces: a part's own texels count in its own lookups there (pcss
+            // finds them in its blocker search, and its narrow filter does not always pass them):
+            // over a ground and a floating sphere, 3 of 153,600 pixels changed without them.
+            if (static_cast<int>(light.colorType.w) == gpu::kLightPoint) continue;
             const float pad = lookupPadTexels(reach, light);
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
             const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;

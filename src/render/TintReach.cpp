@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace penumbra::render {
@@ -393,16 +394,48 @@ TintSides tintFootprintSides(const gpu::LightData& light, const OrientedBox& cas
     return footprintSides(light, caster, receiver, padTexels, tolerance, 0.0f, notBehind, notInFront);
 }
 
+// flatCasterShadowsNone for a spot, projector or point light: `n`, `offset` the unit plane.
+static bool flatCasterShadowsNoneSeenFrom(const gpu::LightData& light, glm::vec3 n, float offset, const OrientedBox& receiver,
+                                          float padTexels, float depthReach) {
+    const glm::vec3 eye(light.positionNear);
+    const float near = light.positionNear.w, far = light.directionFar.w;
+    const float eyeHeight = glm::dot(n, eye) + offset;
+    if (std::abs(eyeHeight) < 1e-4f * far) return false;  // the eye in the plane: neither side is clearly lit
+    if (eyeHeight < 0.0f) n = -n, offset = -offset;
+    const bool cube = static_cast<int>(light.colorType.w) == gpu::kLightPoint;
+    const glm::vec3 axis = glm::normalize(glm::vec3(light.directionFar));
+    float lowest = std::numeric_limits<float>::max(), deepest = 0.0f, leastCos = cube ? 1.0f / std::sqrt(3.0f) : 1.0f;
+    for (const glm::vec3& c : receiver.corners) {
+        const glm::vec3 v = c - eye;
+        const float z = cube ? std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))) : glm::dot(v, axis);
+        if (z <= near) return false;  // at or behind the map's near plane: not bounded here
+        lowest = std::min(lowest, glm::dot(n, c) + offset);
+        deepest = std::max(deepest, z);
+        if (!cube) leastCos = std::min(leastCos, z / glm::length(v));  // a cone holds the box if it holds its corners
+    }
+    float reach = 0.0f;  // view depth a compare may reach past the deepest corner
+    if (depthReach > 0.0f) {
+        const float window = far / (far - near) - far * near / ((far - near) * deepest) + depthReach;
+        const float rest = far - window * (far - near);
+        if (rest <= 0.0f) return false;  // it may compare past the far plane
+        reach = far * near / rest - deepest;
+    }
+    const float margin = 2.0f * padTexels * light.shadow.w * deepest + 2.0f * reach / leastCos + deepest / 4096.0f;
+    return lowest > margin;
+}
+
 bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, const OrientedBox& receiver, float padTexels,
                            float depthReach) {
-    if (static_cast<int>(light.colorType.w) != gpu::kLightDirectional || receiver.empty) return false;
-    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
+    if (receiver.empty) return false;
     glm::vec3 n(plane);
     float offset = plane.w;
     const float length = glm::length(n);
     if (length <= 0.0f) return false;
     n /= length;
     offset /= length;
+    if (static_cast<int>(light.colorType.w) != gpu::kLightDirectional)
+        return flatCasterShadowsNoneSeenFrom(light, n, offset, receiver, padTexels, depthReach);
+    const glm::vec3 d = glm::normalize(glm::vec3(light.directionFar));
     const float facing = -glm::dot(n, d);  // cos t, on the normal's side
     if (std::abs(facing) < 1e-3f) return false;  // edge-on to the light: neither side is clearly lit
     if (facing < 0.0f) n = -n, offset = -offset;

@@ -84,7 +84,13 @@ scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedB
 // more than a lookup reaches. A point h above the plane (along its normal) sees the plane, s to its
 // side across the light, at least (h - s sin t) / cos t deeper (t: the light's angle to the normal);
 // h over twice the pad (the normal offset may move the lookup towards the plane) plus the depth reach
-// and the surface tolerance keeps every compare on the lit side. False for other lights.
+// and the surface tolerance keeps every compare on the lit side.
+// Under a spot, projector or point light (its eye on one side of the plane), the receiver on the
+// eye's side: a tap's ray passes a point at most s = 2 pad texels (z texelScale wide at view depth
+// z) beside a receiver point, so at least h - s above the plane, and meets the plane no nearer than
+// h - s further on, at least (h - s) cos a deeper in view depth (a: the ray's angle to the map's
+// axis; cos a >= 1/sqrt(3) on a cube face). h over s plus twice the depth reach (window depth
+// turned into view depth at the receiver's deepest corner) over cos a keeps it lit.
 bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, const OrientedBox& receiver, float padTexels,
                            float depthReach);
 

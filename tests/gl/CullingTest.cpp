@@ -101,20 +101,23 @@ TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
         }
 }
 
-// A ground carrying casters is drawn into a sun's maps only where their lookups read it: the
+// A ground carrying casters is drawn into a light's maps only where their lookups read it: the
 // texels of the boxes it may shadow, grown by the lookup's reach (Renderer::flatCasterNeeds). The
 // same pixels as `--every-caster`, the same triangles drawn, and far fewer texels of depth: with
 // every caster the ground fills the map; here it fills the box's corner of it. A second box far
-// across the ground grows what is drawn. Every bounded-reach technique, layered maps too.
+// across the ground grows what is drawn. Every bounded-reach technique, layered maps too; under a
+// sun and a spot light. Under a point light the ground is drawn whole, and into every cube face
+// with the sphere alone over it: there its own texels may count in its own lookups (pcss, 15 and
+// 3 pixels changed without them); the same pixels (cube faces are not read back).
 TEST(Culling, AGroundCarryingCastersIsDrawnOnlyWhereTheirLookupsRead) {
-    const auto sceneWith = [](const std::string& boxes) {
+    const auto sceneWith = [](const std::string& light, const std::string& boxes) {
         return sceneFromJson(R"({
           "camera": { "position": [6, 9, 10], "target": [0, 1, 0], "fov_deg": 45 },
-          "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
+          "lights": [ )" + light + R"( ],
           "objects": [ { "shape": "plane", "size": [12, 12] },
-                       { "shape": "sphere", "radius": 0.5, "position": [-1, 3, 0] }, )" + boxes + " ] }");
+                       { "shape": "sphere", "radius": 0.5, "position": [-1, 2.5, 0] } )" + boxes + " ] }");
     };
-    // The share of the sun's depth texels that hold a surface (under 1), over every depth view
+    // The share of the light's depth texels that hold a surface (under 1), over every depth view
     // (a cascaded or warped map's layers too), and the visibility picture.
     const auto render = [](scene::Scene& s, const std::string& technique, bool everyCaster, std::vector<float>& visibility) {
         render::RenderOptions options;
@@ -134,26 +137,39 @@ TEST(Culling, AGroundCarryingCastersIsDrawnOnlyWhereTheirLookupsRead) {
         }
         return texels ? static_cast<double>(surface) / static_cast<double>(texels) : -1.0;
     };
-    const std::string resting = R"({ "shape": "box", "position": [1.5, 0.5, 1.5] })";
+    const std::string resting = R"(, { "shape": "box", "position": [1.5, 0.5, 1.5] })";
     const std::string farther = R"(, { "shape": "box", "position": [-3.5, 0.5, -3.5] })";
-    for (const char* technique : {"hard", "pcf-poisson16", "pcss", "cssm2", "distance", "cascaded", "lispsm"}) {
-        std::vector<float> all, near;
-        scene::Scene one = sceneWith(resting);
-        const double every = render(one, technique, true, all);
-        const double oneBox = render(one, technique, false, near);
-        EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << technique << ", one box";
-        scene::Scene two = sceneWith(resting + farther);
-        const double twoBoxes = render(two, technique, false, near);
-        render(two, technique, true, all);
-        EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << technique << ", two boxes";
-        // A cascaded or warped layer draws only the texels its receivers read, and leaves the rest
-        // as it was: its texels are not counted.
-        if (std::string(technique) == "cascaded" || std::string(technique) == "lispsm") continue;
-        EXPECT_GT(every, 0.4) << technique << ": the ground fills the light's box, about the ground";
-        EXPECT_LT(oneBox, 0.25 * every) << technique << ": the ground only around the box";
-        EXPECT_GT(oneBox, 0.0) << technique << ": the box and the ground under it";
-        EXPECT_GT(twoBoxes, oneBox) << technique << ": the ground around both boxes";
-        EXPECT_LT(twoBoxes, every) << technique << ": still not the whole ground";
+    const std::string lights[] = {
+        R"({ "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } })",
+        R"({ "type": "spot", "position": [0.5, 7, 0.5], "direction": [0, -1, 0], "angle_deg": 100, "range": 20, "shadow": { "resolution": 512 } })",
+        R"({ "type": "point", "position": [0.5, 5, 0.5], "range": 20, "shadow": { "resolution": 256 } })"};
+    for (const std::string& light : lights) {
+        const bool point = light.find("point") != std::string::npos;
+        for (const char* technique : {"hard", "pcf-poisson16", "pcss", "cssm2", "distance", "cascaded", "lispsm"}) {
+            const std::string what = std::string(technique) + ", " + light.substr(0, 30);
+            std::vector<float> all, near;
+            scene::Scene one = sceneWith(light, resting);
+            const double every = render(one, technique, true, all);
+            const double oneBox = render(one, technique, false, near);
+            EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << what << ", one box";
+            scene::Scene none = sceneWith(light, "");
+            render(none, technique, false, near);
+            render(none, technique, true, all);
+            EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << what << ", the sphere alone";
+            scene::Scene two = sceneWith(light, resting + farther);
+            const double twoBoxes = render(two, technique, false, near);
+            render(two, technique, true, all);
+            EXPECT_EQ(differingPixels(all, near, 0.0f), 0u) << what << ", two boxes";
+            // A cascaded or warped layer draws only the texels its receivers read and leaves the
+            // rest as it was (its views show a layer whatever the light): not counted.
+            const bool layered = std::string(technique) == "cascaded" || std::string(technique) == "lispsm";
+            if (layered || point) continue;
+            EXPECT_GT(every, 0.4) << what << ": the ground fills the light's view, about the ground";
+            EXPECT_LT(oneBox, 0.25 * every) << what << ": the ground only around the box";
+            EXPECT_GT(oneBox, 0.0) << what << ": the box and the ground under it";
+            EXPECT_GT(twoBoxes, oneBox) << what << ": the ground around both boxes";
+            EXPECT_LT(twoBoxes, every) << what << ": still not the whole ground";
+        }
     }
 }
 

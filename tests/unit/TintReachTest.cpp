@@ -244,6 +244,60 @@ TEST(TintReach, GroundBelowAFloatingPaneIsBehindItButNotAtTheFootOfABlockStandin
     }
 }
 
+// A ground under a spot or point light shadows a box on the light's side of it by more than a
+// lookup reaches (2 pad texels at the box's depth, and the depth reach turned into view depth),
+// not one resting on it, just above it, or seen from under the ground. Randomly, under an oblique
+// spot: wherever it says a box is lit, every tap's ray near a box point (a light ray through a
+// point up to 2 pad texels across the axis from it) meets the ground deeper in the light's window
+// depth than the compare reaches.
+TEST(TintReach, AFlatCasterUnderASpotOrPointLightShadowsNothingClearlyAboveIt) {
+    const glm::vec4 ground(0, 1, 0, 0);
+    const float pad = 5.0f, texelScale = 2.0f * std::tan(glm::radians(30.0f)) / 512.0f;
+    for (int type : {gpu::kLightSpot, gpu::kLightPoint}) {
+        const gpu::LightData light = perspective(type, {0, 5, 0}, type == gpu::kLightPoint ? 2.0f / 512.0f : texelScale);
+        EXPECT_TRUE(flatCasterShadowsNone(light, ground, OrientedBox(box({0.5f, 1, 0.5f}, {1.5f, 2, 1.5f})), pad, 0.0f)) << type;
+        EXPECT_FALSE(flatCasterShadowsNone(light, ground, OrientedBox(box({0.5f, 0, 0.5f}, {1.5f, 1, 1.5f})), pad, 0.0f))
+            << type << ": resting on it";
+        EXPECT_FALSE(flatCasterShadowsNone(light, ground, OrientedBox(box({0.5f, 0.01f, 0.5f}, {1.5f, 1, 1.5f})), pad, 0.0f))
+            << type << ": a hair above it";
+        EXPECT_FALSE(flatCasterShadowsNone(light, ground, OrientedBox(box({0.5f, 0.4f, 0.5f}, {1.5f, 1, 1.5f})), pad, 1e-3f))
+            << type << ": above it by less than the depth reach";
+        gpu::LightData under = light;
+        under.positionNear = glm::vec4(0, -5, 0, 0.05f);
+        under.directionFar = glm::vec4(0, 1, 0, 50.0f);
+        EXPECT_FALSE(flatCasterShadowsNone(under, ground, OrientedBox(box({0.5f, 1, 0.5f}, {1.5f, 2, 1.5f})), pad, 0.0f))
+            << type << ": the light under the ground";
+    }
+    gpu::LightData spot = perspective(gpu::kLightSpot, {0, 5, 0}, texelScale);
+    const glm::vec3 axis = glm::normalize(glm::vec3(0.7f, -0.7f, 0.2f));  // oblique: a tap beside a point may lie lower
+    spot.directionFar = glm::vec4(axis, spot.directionFar.w);
+    const glm::vec3 eye(spot.positionNear);
+    const glm::vec3 across1 = glm::normalize(glm::cross(axis, glm::vec3(0, 0, 1))), across2 = glm::cross(axis, across1);
+    const float near = spot.positionNear.w, far = spot.directionFar.w;
+    const auto window = [&](float z) { return far / (far - near) - far * near / ((far - near) * z); };
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int lit = 0;
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec3 lo(u(rng) * 6 + 1, u(rng) * 1.5f, u(rng) * 6 - 3);
+        const scene::Bounds b = box(lo, lo + glm::vec3(0.2f + u(rng), 0.2f + u(rng), 0.2f + u(rng)));
+        const float reach = u(rng) < 0.5f ? 0.0f : 2e-4f;
+        if (!flatCasterShadowsNone(spot, ground, OrientedBox(b), pad, reach)) continue;
+        ++lit;
+        for (int k = 0; k < 50; ++k) {
+            const glm::vec3 p = glm::mix(b.min, b.max, glm::vec3(u(rng), u(rng), u(rng)));
+            const float z = glm::dot(p - eye, axis), texel = z * texelScale;
+            const float angle = u(rng) * 6.2832f;  // a tap up to 2 pad texels across the axis
+            const glm::vec3 side = (std::cos(angle) * across1 + std::sin(angle) * across2) * (2.0f * pad * texel * u(rng));
+            const glm::vec3 ray = glm::normalize(p + side - eye);
+            ASSERT_LT(ray.y, 0.0f);
+            const glm::vec3 hit = eye + ray * (-eye.y / ray.y);  // where it meets the ground
+            EXPECT_GT(window(glm::dot(hit - eye, axis)), window(z) + reach) << "box " << i << ", point " << k;
+        }
+    }
+    EXPECT_GT(lit, 40) << "boxes clearly above the ground";
+}
+
 // No padding or bias: each receiver point with a layer of the caster at or behind it on its ray
 // from the light (the ray beyond it meets the caster) is in the not-behind box; there a lookup
 // may find a layer behind the receiver.
