@@ -103,8 +103,9 @@ struct RenderOptions {
     // (`--shadow-everywhere`) looks every shadow up on every pixel, for measuring what it saves.
     bool shadowOnlyWhereCast = true;
     // Leave out of a light's maps the flat opaque casters whose shadow can fall on no other surface
-    // (a ground under everything), with those techniques: the same pixels, less of the maps drawn
-    // (Renderer::flatCasterNeeds). false (`--every-caster`) draws every caster.
+    // (a ground under everything), and draw one carrying a few still casters only around them,
+    // with those techniques: the same pixels, less of the maps drawn (Renderer::flatCasterNeeds).
+    // false (`--every-caster`) draws every caster whole.
     bool onlyCastersThatShadow = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
