@@ -62,8 +62,8 @@ TEST(Culling, EachLightDrawsOnlyTheCastersInItsViewVolume) {
 
 // A flat caster whose shadow can fall on no other surface is left out of a sun's maps, with the
 // same pixels: a ground under floating casters (its 2 triangles), but not a ground something rests
-// on (its bottom lies within a lookup's reach of the ground), nor a platform over a sphere (which it
-// shadows). Every bounded-reach technique; the picture of each against `--every-caster`'s.
+// on (its bottom lies within a lookup's reach of the ground: drawn, around it alone, the test
+// below), nor a platform over a sphere (which it shadows). Every bounded-reach technique; the picture of each against `--every-caster`'s.
 TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
     const auto sceneWith = [](const std::string& objects) {
         return sceneFromJson(R"({
