@@ -36,6 +36,16 @@ enum class Casters { Opaque, Translucent };
 // change only when someone edits the scene.
 enum class Motion { Any, Still, Moving };
 
+// The square map a depth pass draws (CasterSelection::map).
+struct CasterMap {
+    int resolution = 0;
+    glm::ivec4 texels{0};    // (x0, y0, x1, y1), exclusive: what the pass draws, its scissor if `scissored`
+    bool scissored = false;  // else the scissor test is off
+    // The texels that world `points` seen through `viewProj` cover in this map: their projections'
+    // bounding texels, or the whole map where one lies behind the eye (MapRegion.cpp).
+    glm::ivec4 texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const;
+};
+
 // Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip
 // volume of `cull` (a light's view-projection, one cube face's, ...) are skipped: a caster
 // outside a light's view volume cannot shadow anything inside it. nullopt draws every caster
@@ -47,18 +57,9 @@ enum class Motion { Any, Still, Moving };
 // a solid (render::Draw::solid) is one of its front faces, so such a pass culls the faces a solid
 // turns away from lightViewProj: the map is the same, at about half the raster work. Passes that
 // flatten casters, or colour them through every face, draw both faces.
-// `map`: the square map a depth pass draws through lightViewProj, where it has one view of it
+// `map`: the map a depth pass draws through lightViewProj, where it draws one view of one
 // (nullopt: drawCasters draws each caster whole). With it, a ground carrying other casters is
 // drawn only where their lookups read it (render::Renderer::flatCasterNeeds).
-struct CasterMap {
-    int resolution = 0;
-    glm::ivec4 texels{0};    // (x0, y0, x1, y1), exclusive: what the pass draws, its scissor if `scissored`
-    bool scissored = false;  // else the scissor test is off
-    // The texels that world `points` seen through `viewProj` cover in this map: their projections'
-    // bounding texels, or the whole map where one lies behind the eye (MapRegion.cpp).
-    glm::ivec4 texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const;
-};
-
 struct CasterSelection {
     Casters casters = Casters::Opaque;
     std::optional<glm::mat4> cull;
