@@ -254,8 +254,8 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         };
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const std::vector<FlatCasterNeed>& flatNeeds = flatCasterNeeds(draws, block);
-        // The receivers a flat part is drawn for in this selection's light's maps (none: drawn whole).
-        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const std::vector<std::size_t>* {
+        // The receivers' boxes a flat part is drawn for in this selection's light's maps (none: drawn whole).
+        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const std::vector<OrientedBox::Corners>* {
             const auto& near = flatNeeds[index].near;
             const auto light = static_cast<std::size_t>(selection.light);
             return selection.light >= 0 && light < near.size() && !near[light].empty() ? &near[light] : nullptr;
@@ -287,7 +287,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
                 // A flat part drawn only near its receivers holds what they were when it was drawn.
                 if (const auto* near = nearOf(static_cast<std::size_t>(&d - draws.data()), selection))
-                    for (std::size_t r : *near) digest.add(r, draws[r].model);
+                    for (const OrientedBox::Corners& box : *near) digest.add(box);
             }
             return digest.value();
         };
@@ -310,7 +310,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 const auto* near = selection.map && selection.lightViewProj ? nearOf(static_cast<std::size_t>(&d - draws.data()), selection) : nullptr;
                 if (near) {
                     const float pad = lookupPadTexels(technique_->shadowReachTexels(), block.lights[selection.light]);
-                    const glm::ivec4 t = nearTexels(draws, *near, selection, pad);
+                    const glm::ivec4 t = selection.map->texelsNear(*near, *selection.lightViewProj, static_cast<int>(std::ceil(pad)));
                     if (t.x >= t.z || t.y >= t.w) continue;
                     glEnable(GL_SCISSOR_TEST);
                     glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
@@ -943,7 +943,7 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
             const float pad = lookupPadTexels(reach, light);
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
             const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
-            std::vector<std::size_t> shadowed;
+            std::vector<OrientedBox::Corners> shadowed;
             bool whole = false;  // a receiver that moves, or too many of them
             for (std::size_t r = 0; r < draws.size() && !whole; ++r) {
                 if (r == c) continue;
@@ -954,7 +954,7 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
                                                            : shadowFootprint(light, caster, receiver, pad))
                                           .empty();
                 if (!shadows) continue;
-                shadowed.push_back(r);
+                shadowed.push_back(receiver.corners);
                 // A light's kept still map holds the part as drawn for the receivers of that frame.
                 whole = draws[r].moving || shadowed.size() > kMostNear;
             }
@@ -969,26 +969,6 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
     flatCasterNeedsKey_ = digest.value();
     flatCasterNeeds_ = std::move(needs);
     return flatCasterNeeds_;
-}
-
-glm::ivec4 Renderer::nearTexels(const std::vector<Draw>& draws, const std::vector<std::size_t>& near,
-                                const shadows::CasterSelection& selection, float padTexels) const {
-    const shadows::CasterMap& map = *selection.map;
-    const int pad = static_cast<int>(std::ceil(padTexels));
-    glm::ivec4 texels(0);
-    bool any = false;
-    for (std::size_t r : near) {
-        const OrientedBox box(draws[r].meshBounds, draws[r].model);
-        const glm::ivec4 t = map.texelsOf(box.corners, *selection.lightViewProj);
-        if (t.x >= t.z || t.y >= t.w) continue;
-        texels = any ? glm::ivec4(glm::min(glm::ivec2(texels), glm::ivec2(t)), glm::max(glm::ivec2(texels.z, texels.w), glm::ivec2(t.z, t.w)))
-                     : t;
-        any = true;
-    }
-    if (!any) return glm::ivec4(0);
-    // Grown by the reach, within what the pass draws.
-    return {std::max(texels.x - pad, map.texels.x), std::max(texels.y - pad, map.texels.y), std::min(texels.z + pad, map.texels.z),
-            std::min(texels.w + pad, map.texels.w)};
 }
 
 // Where no other caster's shadow volume reaches an opaque receiver, a light's map holds the

@@ -250,19 +250,16 @@ private:
         // A bit per light whose maps leave the part out: its shadow footprint on every other draw
         // is empty (as addShadowReach pads it).
         std::uint32_t nothing = 0;
-        // Per light (empty where the part is drawn whole or not at all): the still draws its
-        // footprint reaches, a ground carrying them. The part is drawn only where their lookups
-        // read, their texels and the lookup's reach around them (drawCasters' scissor).
-        std::vector<std::vector<std::size_t>> near;
+        // Per light (empty where the part is drawn whole or not at all): the boxes of the still
+        // draws its footprint reaches, a ground carrying them. The part is drawn only where their
+        // lookups read, their texels and the lookup's reach around them (drawCasters' scissor,
+        // CasterMap::texelsNear).
+        std::vector<std::vector<OrientedBox::Corners>> near;
     };
     // (Kept, and answered again, while nothing it depends on changed.)
     const std::vector<FlatCasterNeed>& flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
     mutable std::uint64_t flatCasterNeedsKey_ = 0;  // flatCasterNeeds' last answer and what it was of
     mutable std::vector<FlatCasterNeed> flatCasterNeeds_;
-    // The texels of a depth pass's map (CasterSelection::map) where a flat part is drawn for `near`'s
-    // receivers: their boxes' texels grown by the lookup's reach, within the pass's own texels.
-    glm::ivec4 nearTexels(const std::vector<Draw>& draws, const std::vector<std::size_t>& near,
-                          const shadows::CasterSelection& selection, float padTexels) const;
     // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
     void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                         int width, int height) const;

@@ -16,6 +16,7 @@
 #include "shadows/Parameter.h"
 #include "shadows/ShadowSlots.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -41,9 +42,10 @@ struct CasterMap {
     int resolution = 0;
     glm::ivec4 texels{0};    // (x0, y0, x1, y1), exclusive: what the pass draws, its scissor if `scissored`
     bool scissored = false;  // else the scissor test is off
-    // The texels that world `points` seen through `viewProj` cover in this map: their projections'
-    // bounding texels, or the whole map where one lies behind the eye (MapRegion.cpp).
-    glm::ivec4 texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const;
+    // The texels of this pass within `padTexels` of what world boxes (their 8 corners each) seen
+    // through `viewProj` cover: the union of each box's bounding texels (the whole map where a
+    // corner lies behind the eye), grown by the pad (MapRegion.cpp). Empty where no box is.
+    glm::ivec4 texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, int padTexels) const;
 };
 
 // Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip

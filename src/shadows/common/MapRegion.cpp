@@ -33,8 +33,10 @@ TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj
     return texelsOf(lo, hi, resolution);
 }
 
-glm::ivec4 CasterMap::texelsOf(std::span<const glm::vec3> points, const glm::mat4& viewProj) const {
-    return texelRect(points, viewProj, resolution);
+glm::ivec4 CasterMap::texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, int padTexels) const {
+    TexelRect near(0);
+    for (const auto& corners : boxes) near = unite(near, texelRect(corners, viewProj, resolution));
+    return intersection(grown(near, glm::ivec2(padTexels), resolution), texels);
 }
 
 // A perspective light sees only the box's part in front of its eye: a convex solid whose corners
