@@ -54,7 +54,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
         "--every-caster", [&options] { options.onlyCastersThatShadow = false; },
         "draw every caster whole into every light's maps (default: with the techniques that bound their lookup's reach, "
         "leave out the flat opaque ones, a ground, whose shadow can fall on no other surface, and draw a ground carrying "
-        "a few still casters only around them, under suns, spots and projectors; the same pixels)");
+        "a few still casters only around them, under suns, spots and projectors; with vsm, esm, evsm2 and evsm4 a ground "
+        "only around the shadows on it and what it shadows, moving casters too, blurred and mip-mapped only there; the "
+        "same pixels)");
     options.floatTarget = false;  // the front-ends' default: straight into 8-bit sRGB where the frame allows
     command.add_flag("--float-target", options.floatTarget,
                      "shade into a 32-bit float target and resolve it (fog, sRGB) in a pass of its own (default: straight "

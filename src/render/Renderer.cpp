@@ -254,11 +254,19 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         };
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const std::vector<FlatCasterNeed>& flatNeeds = flatCasterNeeds(draws, block);
-        // The receivers' boxes a flat part is drawn for in this selection's light's maps (none: drawn whole).
-        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const std::vector<OrientedBox::Corners>* {
+        // The boxes a flat part is drawn near in this selection's light's maps (none: drawn whole).
+        // Near moving casters only in passes that redraw wherever they are and were.
+        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const NearCasters* {
             const auto& near = flatNeeds[index].near;
             const auto light = static_cast<std::size_t>(selection.light);
-            return selection.light >= 0 && light < near.size() && !near[light].empty() ? &near[light] : nullptr;
+            if (selection.light < 0 || light >= near.size() || near[light].empty()) return nullptr;
+            const bool follows = selection.map && selection.map->followsMovingCasters;
+            return near[light].moving.empty() || follows ? &near[light] : nullptr;
+        };
+        // The texels of selection.map a flat part drawn near `boxes` is drawn in (a scissor).
+        const auto nearTexels = [&](std::span<const OrientedBox::Corners> boxes, const shadows::CasterSelection& selection) {
+            const float pad = lookupPadTexels(flatCasterReach().texels, block.lights[selection.light]);
+            return selection.map->texelsNear(boxes, *selection.lightViewProj, pad);
         };
         const auto selected = [&](const Draw& d, const shadows::CasterSelection& selection) {
             using shadows::Motion;
@@ -274,6 +282,27 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 if (selected(d, selection)) all.add(d.worldBounds);
             return all;
         };
+        frame.casterTexels = [&](const shadows::CasterSelection& selection) {
+            using shadows::CasterMap;
+            std::vector<OrientedBox::Corners> whole;  // the casters drawn whole
+            glm::ivec4 near(0);                       // and the scissors of those drawn near others
+            shadows::CasterSelection any = selection;
+            any.motion = shadows::Motion::Any;
+            for (const Draw& d : draws) {
+                const auto* boxes = nearOf(static_cast<std::size_t>(&d - draws.data()), selection);
+                if (selected(d, selection)) {
+                    if (boxes) {
+                        near = CasterMap::united(near, CasterMap::united(nearTexels(boxes->still, selection), nearTexels(boxes->moving, selection)));
+                    } else {
+                        OrientedBox::Corners& corners = whole.emplace_back();
+                        for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = d.worldBounds.corner(i);
+                    }
+                } else if (boxes && selection.motion == shadows::Motion::Moving && selected(d, any)) {
+                    near = CasterMap::united(near, nearTexels(boxes->moving, selection));  // a still ground following them
+                }
+            }
+            return CasterMap::united(near, selection.map->texelsNear(whole, *selection.lightViewProj, 0.0f));
+        };
         frame.casterBoxes = [&](const shadows::CasterSelection& selection) {
             std::vector<scene::Bounds> boxes;
             for (const Draw& d : draws)
@@ -285,9 +314,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
                 digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
-                // A flat part drawn only near its receivers holds what they were when it was drawn.
-                if (const auto* near = nearOf(static_cast<std::size_t>(&d - draws.data()), selection))
-                    for (const OrientedBox::Corners& box : *near) digest.add(box);
+                // A flat part drawn only near still casters holds what they were when it was drawn.
+                const auto& near = flatNeeds[static_cast<std::size_t>(&d - draws.data())].near;
+                if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < near.size())
+                    for (const OrientedBox::Corners& box : near[static_cast<std::size_t>(selection.light)].still) digest.add(box);
             }
             return digest.value();
         };
@@ -306,19 +336,25 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
                 cullBackFacesOfSolid(d, away != GL_NONE, through);
-                // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds).
+                const auto draw = [&] {
+                    return selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
+                                          : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
+                };
+                // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds):
+                // near the still ones, and apart near the moving ones, so that each rectangle
+                // depends on its casters alone.
                 const auto* near = selection.map && selection.lightViewProj ? nearOf(static_cast<std::size_t>(&d - draws.data()), selection) : nullptr;
-                if (near) {
-                    const float pad = lookupPadTexels(technique_->shadowReachTexels(), block.lights[selection.light]);
-                    const glm::ivec4 t = selection.map->texelsNear(*near, *selection.lightViewProj, static_cast<int>(std::ceil(pad)));
-                    if (t.x >= t.z || t.y >= t.w) continue;
+                std::size_t drawn = 0;
+                if (!near) {
+                    drawn = draw();
+                } else {
                     glEnable(GL_SCISSOR_TEST);
-                    glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
-                }
-                const std::size_t drawn = selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
-                                                         : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
-                if (near) {  // the pass's own scissor back
-                    const glm::ivec4 t = selection.map->texels;
+                    for (const glm::ivec4& t : {nearTexels(near->still, selection), nearTexels(near->moving, selection)}) {
+                        if (t.x >= t.z || t.y >= t.w) continue;
+                        glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
+                        drawn += draw();
+                    }
+                    const glm::ivec4 t = selection.map->texels;  // the pass's own scissor back
                     glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
                     if (!selection.map->scissored) glDisable(GL_SCISSOR_TEST);
                 }
@@ -901,8 +937,15 @@ void Renderer::addLightReach(TintSplit& split, const std::vector<Draw>& draws, c
     }
 }
 
+Renderer::FlatCasterReach Renderer::flatCasterReach() const {
+    const float filtered = technique_->filterReachTexels();
+    // A filtered lookup averages depths on both sides of the receiver's: no side is safe.
+    if (filtered >= 0.0f) return {filtered, -1.0f, true};
+    return {technique_->shadowReachTexels(), technique_->shadowReachDepth(), false};
+}
+
 const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
-    const float reach = technique_->shadowReachTexels(), depthReach = technique_->shadowReachDepth();
+    const auto [reach, depthReach, filtered] = flatCasterReach();
     if (!options_.onlyCastersThatShadow || reach < 0.0f) {  // every caster drawn whole
         flatCasterNeedsKey_ = 0;
         flatCasterNeeds_.assign(draws.size(), FlatCasterNeed{});
@@ -912,7 +955,7 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
     // (scenes/street.json: 1.0-1.1 ms a frame for its 215 parts on llvmpipe's machine, 0.75-0.97
     // when a part's first receiver ended the search).
     util::Digest digest;
-    digest.add(reach, depthReach, block);
+    digest.add(reach, depthReach, filtered, block);
     for (const scene::Light& light : scene_.lights) digest.add(light.shadow.polygonOffset);
     for (const Draw& d : draws) digest.add(d.object, d.mesh, d.part, d.model, d.translucent, d.castsShadow, d.moving);
     if (digest.value() == flatCasterNeedsKey_ && flatCasterNeeds_.size() == draws.size()) return flatCasterNeeds_;
@@ -943,8 +986,8 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
             const float pad = lookupPadTexels(reach, light);
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
             const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
-            std::vector<OrientedBox::Corners> shadowed;
-            bool whole = false;  // a receiver that moves, or too many of them
+            NearCasters shadowed;
+            bool whole = false;  // a receiver that moves (but with a filtered lookup), or too many of them
             for (std::size_t r = 0; r < draws.size() && !whole; ++r) {
                 if (r == c) continue;
                 const OrientedBox& receiver = boxes[r];
@@ -953,10 +996,15 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
                 const bool shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)
                                                            : shadowFootprint(light, caster, receiver, pad))
                                           .empty();
-                if (!shadows) continue;
-                shadowed.push_back(receiver.corners);
-                // A light's kept still map holds the part as drawn for the receivers of that frame.
-                whole = draws[r].moving || shadowed.size() > kMostNear;
+                // A filtered lookup on the part itself averages its depth with those of the
+                // opaque casters shadowing it: it stays in the map around their shadows too.
+                const bool shadowedBy = filtered && draws[r].castsShadow && !draws[r].translucent &&
+                                        !shadowFootprint(light, receiver, caster, pad).empty();
+                if (!shadows && !shadowedBy) continue;
+                // A light's kept still map holds the part as drawn for the receivers of that frame;
+                // moment maps redraw every caster where the moving ones are and were.
+                (draws[r].moving ? shadowed.moving : shadowed.still).push_back(receiver.corners);
+                whole = (draws[r].moving && !filtered) || shadowed.still.size() + shadowed.moving.size() > kMostNear;
             }
             if (shadowed.empty()) {
                 need.nothing |= 1u << static_cast<unsigned>(l);

@@ -246,6 +246,13 @@ private:
     // points, with a technique that bounds its lookup's reach. Its map texels hold what lies
     // behind it where it is left out, and every lookup answers as before: receivers' own texels
     // count as lit, and no receiver it is not drawn for lies behind it within that reach.
+    // The boxes of the draws a flat part is drawn near: still ones, and (with a filtered lookup,
+    // FlatCasterReach) moving ones, drawn near only in passes that follow them
+    // (CasterMap::followsMovingCasters).
+    struct NearCasters {
+        std::vector<OrientedBox::Corners> still, moving;
+        bool empty() const { return still.empty() && moving.empty(); }
+    };
     struct FlatCasterNeed {
         // A bit per light whose maps leave the part out: its shadow footprint on every other draw
         // is empty (as addShadowReach pads it).
@@ -254,8 +261,16 @@ private:
         // draws its footprint reaches, a ground carrying them. The part is drawn only where their
         // lookups read, their texels and the lookup's reach around them (drawCasters' scissor,
         // CasterMap::texelsNear).
-        std::vector<std::vector<OrientedBox::Corners>> near;
+        std::vector<NearCasters> near;
     };
+    // The technique's reach flatCasterNeeds judges flat parts by, in texels of the light's map,
+    // with its reach in depth (negative: both sides of a caster count); `filtered`: its
+    // filterReachTexels, else its shadowReachTexels and shadowReachDepth.
+    struct FlatCasterReach {
+        float texels, depth;
+        bool filtered;
+    };
+    FlatCasterReach flatCasterReach() const;
     // (Kept, and answered again, while nothing it depends on changed.)
     const std::vector<FlatCasterNeed>& flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
     mutable std::uint64_t flatCasterNeedsKey_ = 0;  // flatCasterNeeds' last answer and what it was of

@@ -42,10 +42,21 @@ struct CasterMap {
     int resolution = 0;
     glm::ivec4 texels{0};    // (x0, y0, x1, y1), exclusive: what the pass draws, its scissor if `scissored`
     bool scissored = false;  // else the scissor test is off
-    // The texels of this pass within `padTexels` of what world boxes (their 8 corners each) seen
-    // through `viewProj` cover: the union of each box's bounding texels (the whole map where a
-    // corner lies behind the eye), grown by the pad (MapRegion.cpp). Empty where no box is.
-    glm::ivec4 texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, int padTexels) const;
+    // This map's texels per texel of its light's plain map (LightSpace::resolution) where both
+    // see through the same light space (moments at half resolution: 1/2), so that a reach in the
+    // light's texels is this many of its own; 1 for maps of their own (cascades, warped views).
+    float texelsPerLightTexel = 1.0f;
+    // The pass draws every caster again wherever moving ones are and were (moment maps' changed
+    // texels), so a ground may follow moving casters too: drawn near them, its texels there
+    // counting as theirs (ShadowFrame::casterTexels). Else a ground near a moving caster is whole.
+    bool followsMovingCasters = false;
+    // The texels of this pass within `pad` texels of its light's plain map of what world boxes
+    // (their 8 corners each) seen through `viewProj` cover: the union of each box's bounding texels
+    // (the whole map where a corner lies behind the eye), grown by the pad (MapRegion.cpp). Empty
+    // where no box is.
+    glm::ivec4 texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, float pad) const;
+    // The smallest rectangle holding both (MapRegion's unite; either may be empty).
+    static glm::ivec4 united(const glm::ivec4& a, const glm::ivec4& b);
 };
 
 // Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip
@@ -137,6 +148,9 @@ struct ShadowFrame {
     // The world bounds of the casters `drawCasters` would draw for `selection` (empty: none), so
     // that passes over a map can be limited to where those casters can have written.
     std::function<scene::Bounds(const CasterSelection& selection)> casterBounds;
+    // The texels of `selection.map` (which it must name, with lightViewProj) that those casters
+    // can write: each one's bounding texels, a ground drawn only near its casters' scissor.
+    std::function<glm::ivec4(const CasterSelection& selection)> casterTexels;
     // The same casters' world bounds one by one (a box per drawn part), for passes that must know
     // which caster lies in front of which (DepthAndTintMaps' tint over the still depth).
     std::function<std::vector<scene::Bounds>(const CasterSelection& selection)> casterBoxes;
@@ -233,6 +247,14 @@ public:
     // cannot shadow it (render/TintReach.h, opaqueShadowFootprint). Negative (the default): not
     // bounded, every caster's shadow volume counts on both sides of it.
     virtual float shadowReachDepth() const { return -1.0f; }
+    // How far from a receiver's own texel, in texels of its light's map, a lookup that filters
+    // depths before it compares (moment maps: their blur, the mip levels they read, the bilinear
+    // fetch) reads the map, averaging the receiver's own depth with its occluders': a flat caster
+    // (a ground) stays in the map within that reach of every caster that shadows it and every
+    // receiver it shadows, and is left out beyond, where the lookup would mix its depth with
+    // nothing but the far plane's (Renderer::flatCasterNeeds). Negative (the default): the lookup
+    // compares depths one by one (shadowReachTexels' rule), or its reach is not bounded.
+    virtual float filterReachTexels() const { return -1.0f; }
     // Whether the lookup has a cheaper build for receivers behind every translucent layer around
     // them (RECEIVER_BEHIND_LAYERS), giving the same pixels there: CSSM's tint product without its
     // fallback loop. The renderer draws with it where render/TintReach.h shows every caster whose

@@ -3,6 +3,7 @@
 #include "shadows/ShadowTechnique.h"
 
 #include <array>
+#include <cmath>
 
 namespace penumbra::shadows {
 
@@ -33,11 +34,14 @@ TexelRect texelRect(std::span<const glm::vec3> points, const glm::mat4& viewProj
     return texelsOf(lo, hi, resolution);
 }
 
-glm::ivec4 CasterMap::texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, int padTexels) const {
+glm::ivec4 CasterMap::texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, float pad) const {
     TexelRect near(0);
     for (const auto& corners : boxes) near = unite(near, texelRect(corners, viewProj, resolution));
+    const int padTexels = static_cast<int>(std::ceil(pad * texelsPerLightTexel));
     return intersection(grown(near, glm::ivec2(padTexels), resolution), texels);
 }
+
+glm::ivec4 CasterMap::united(const glm::ivec4& a, const glm::ivec4& b) { return unite(a, b); }
 
 // A perspective light sees only the box's part in front of its eye: a convex solid whose corners
 // are the box's corners there and the points where the box's edges cross the eye's plane. A

@@ -37,6 +37,10 @@ public:
     std::vector<std::string> lookupDefines() const override;
     void bindLookup(const gl::Program& lighting) const override;
     std::size_t memoryBytes() const override;
+    // The blur's reach, then the mip levels' (at most max_lod) and the bilinear fetch's, in moment
+    // texels, times the light's texels per moment texel; not bounded with anisotropy, whose
+    // footprint grows past the level's; none for MSM (see the definition).
+    float filterReachTexels() const override;
     std::vector<DebugView> debugViews() const override;
 
 protected:
@@ -61,6 +65,9 @@ private:
         std::vector<gl::Framebuffer> levelLayersTargets;
         std::vector<gl::Texture> levelLayers;
         std::vector<DerivedTexels> derived;  // per face: what the moments were made from
+        // Per face, per level: the texels that may hold other than the far plane's moments, which
+        // the texels outside hold; those a remake leaves outside what casters reach are cleared.
+        std::vector<std::vector<TexelRect>> holds;
         gl::Framebuffer rawTarget, scratchTarget;  // rawTarget: raw with rasterDepth
         gl::Texture rasterDepth;  // the casters' own raster (not with MSAA), at the moments' resolution
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
@@ -87,6 +94,10 @@ private:
     void buildPrograms();
     // The moments where no caster is (depth 1), as moments.glsl's momentsOf(1) gives them.
     glm::vec4 farMoments() const;
+    // The opaque casters of face `face` whose moments the raster draws inside `texels`, through
+    // its view (shifted half a texel for the box), a ground only near its shadows.
+    CasterSelection casterSelection(const ShadowFrame& frame, std::size_t light, std::size_t face, const TexelRect& texels,
+                                    Motion motion) const;
     // Draws the opaque casters' moments into `target` (a raster framebuffer), inside `texels`.
     void rasterMoments(std::size_t light, std::size_t face, const gl::Framebuffer& target, const TexelRect& texels,
                        const ShadowFrame& frame);
@@ -124,6 +135,10 @@ private:
     bool firstOrderRaw() const;
     GLenum rawFormat() const;  // of LightMoments::raw
     glm::vec4 farRaw() const;  // what the raw map holds where no caster is
+    // The coarsest mip level made, and so read: it bounds how far a lookup reads
+    // (filterReachTexels), so that a ground is drawn, blurred and mip-mapped only around the
+    // shadows on it.
+    int maxLod_ = 4;
     int anisotropy_ = 1;  // of the mipmapped moments; 16x doubled the lookup on llvmpipe (50 -> 100 ms)
     float positiveExponent_, negativeExponent_ = 5;
     float minVariance_ = 1e-5f, bleedReduction_, momentBias_ = 3e-5f;
