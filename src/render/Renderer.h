@@ -104,8 +104,9 @@ struct RenderOptions {
     bool shadowOnlyWhereCast = true;
     // Leave out of a light's maps the flat opaque casters whose shadow can fall on no other surface
     // (a ground under everything), and draw one carrying a few still casters only around them,
-    // with those techniques: the same pixels, less of the maps drawn (Renderer::flatCasterNeeds).
-    // false (`--every-caster`) draws every caster whole.
+    // with those techniques; with moment maps (but MSM) a ground only around the shadows on it
+    // and what it shadows (ShadowTechnique::filterReachTexels): the same pixels, less of the maps
+    // drawn (Renderer::flatCasterNeeds). false (`--every-caster`) draws every caster whole.
     bool onlyCastersThatShadow = true;
     // Shade into a 32-bit float target and resolve it into the output in a pass of its own (fog,
     // clamp, sRGB): what readLinear() reads. false shades straight into the output as 8-bit sRGB
@@ -242,10 +243,6 @@ private:
     // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
     void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                        int width, int height) const;
-    // What a light's maps need of an opaque flat part (no solid) that shadows none of its own
-    // points, with a technique that bounds its lookup's reach. Its map texels hold what lies
-    // behind it where it is left out, and every lookup answers as before: receivers' own texels
-    // count as lit, and no receiver it is not drawn for lies behind it within that reach.
     // The boxes of the draws a flat part is drawn near: still ones, and (with a filtered lookup,
     // FlatCasterReach) moving ones, drawn near only in passes that follow them
     // (CasterMap::followsMovingCasters).
@@ -253,13 +250,21 @@ private:
         std::vector<OrientedBox::Corners> still, moving;
         bool empty() const { return still.empty() && moving.empty(); }
     };
+    // What a light's maps need of an opaque flat part (no solid) that shadows none of its own
+    // points, with a technique that bounds its lookup's reach. Its map texels hold what lies
+    // behind it where it is left out, and every lookup answers as before: receivers' own texels
+    // count as lit, and no receiver it is not drawn for lies behind it within that reach. A
+    // filtered lookup (moment maps) reads the part's own texels averaged with its occluders':
+    // there it also needs the part around the shadows on it.
     struct FlatCasterNeed {
         // A bit per light whose maps leave the part out: its shadow footprint on every other draw
-        // is empty (as addShadowReach pads it).
+        // is empty (as addShadowReach pads it), and with a filtered lookup no opaque caster's
+        // footprint reaches it.
         std::uint32_t nothing = 0;
-        // Per light (empty where the part is drawn whole or not at all): the boxes of the still
-        // draws its footprint reaches, a ground carrying them. The part is drawn only where their
-        // lookups read, their texels and the lookup's reach around them (drawCasters' scissor,
+        // Per light (empty where the part is drawn whole or not at all): the boxes of the draws
+        // its footprint reaches, a ground carrying them, and with a filtered lookup of the opaque
+        // casters whose footprint reaches it. The part is drawn only where their lookups read,
+        // their texels and the lookup's reach around them (drawCasters' scissor,
         // CasterMap::texelsNear).
         std::vector<NearCasters> near;
     };
