@@ -22,6 +22,9 @@ namespace penumbra::shadows {
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
 // While the still casters and the light stay put, only the rectangle the animated casters cover
 // now or covered last frame is drawn, blurred and mip-mapped again, widened by the blur's reach.
+// A ground is drawn (but for MSM) only within the lookup's reach of the shadows on it and what it
+// shadows (filterReachTexels), and the moments are made only where casters reach: elsewhere the
+// map keeps the far plane's moments, cleared once (LightMoments::holds).
 class MomentShadowMap final : public ShadowTechnique {
 public:
     enum class Warp {
