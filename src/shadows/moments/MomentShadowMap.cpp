@@ -106,7 +106,7 @@ std::vector<Parameter> MomentShadowMap::declareParameters() {
         Parameter::integer("max_lod", maxLod_, 0, 16,
                            "the coarsest mip level made and read (4: 64^2 of the default 1024^2 moments); it bounds how "
                            "far a lookup reads, so that a ground is drawn, blurred and mip-mapped only around the shadows "
-                           "on it (the default scene: the same pixels as with every level)"),
+                           "on it, but for msm (the default scene against every level: vsm and evsm4 the same pixels, msm 1 pixel apart)"),
         Parameter::integer("anisotropy", anisotropy_, 1, 16, "anisotropic filtering of the mipmapped moments"),
         Parameter::flag("compute_blur", computeBlur_,
                         "the radius-1 Gaussian (blur_radius 1-2 at half resolution) or the box, and mip levels 1-4, in one "
