@@ -294,8 +294,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                     if (boxes) {
                         near = CasterMap::united(near, CasterMap::united(nearTexels(boxes->still, selection), nearTexels(boxes->moving, selection)));
                     } else {
-                        OrientedBox::Corners& corners = whole.emplace_back();
-                        for (int i = 0; i < 8; ++i) corners[static_cast<std::size_t>(i)] = d.worldBounds.corner(i);
+                        whole.push_back(d.worldBounds.corners());
                     }
                 } else if (boxes && selection.motion == shadows::Motion::Moving && selected(d, any)) {
                     near = CasterMap::united(near, nearTexels(boxes->moving, selection));  // a still ground following them
