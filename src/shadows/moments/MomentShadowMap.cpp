@@ -34,17 +34,10 @@ bool MomentShadowMap::firstOrderRaw() const {
     return boxBlur() && !msaa && !compute;
 }
 
-GLenum MomentShadowMap::rawFormat() const {
-    if (!firstOrderRaw()) return format();
-    // In 32 bits whatever the moments' format: squares of half floats would round twice.
-    return warp_ == Warp::ExponentialVariance4 ? GL_RG32F : GL_R32F;
-}
-
-glm::vec4 MomentShadowMap::farRaw() const {
-    if (!firstOrderRaw()) return farMoments();
-    if (warp_ == Warp::Moments4) return {1.0f, 0.0f, 0.0f, 0.0f};  // t at the far plane
+glm::vec2 MomentShadowMap::farFirstOrder() const {
+    if (warp_ == Warp::Moments4) return {1.0f, 0.0f};  // t at the far plane
     const glm::vec4 far = farMoments();  // x or e^{c+ x} or p first, n third
-    return {far.x, warp_ == Warp::ExponentialVariance4 ? far.z : 0.0f, 0.0f, 0.0f};
+    return {far.x, warp_ == Warp::ExponentialVariance4 ? far.z : 0.0f};
 }
 
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
@@ -62,7 +55,6 @@ void MomentShadowMap::buildPrograms() {
     defines.push_back("BLUR_RADIUS " + std::to_string(taps));
     defines.push_back("BLUR_SIGMA " + std::to_string(sigma));
     defines.push_back(std::string("MOMENT_DOWNSAMPLE ") + (halfResolution_ ? "1" : "0"));
-    defines.push_back(std::string("RAW_FIRST_ORDER ") + (firstOrderRaw() ? "1" : "0"));
     toMoments_ = gl::Program::build(
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     // The box in one bilinear fetch; the Gaussian of radius 1 in one pass of four, larger ones in two
@@ -71,7 +63,13 @@ void MomentShadowMap::buildPrograms() {
                        : box              ? "src/shadows/moments/blur_box.frag"
                        : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
                                    : "src/shadows/moments/blur.frag";
-    blur_ = gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = defines});
+    const auto blurFor = [&](const char* perspective) {
+        std::vector<std::string> d = defines;
+        if (firstOrderRaw()) d.push_back(std::string("LIGHT_PERSPECTIVE ") + perspective);
+        return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = d});
+    };
+    blur_ = blurFor("0");
+    perspectiveBlur_ = firstOrderRaw() ? blurFor("1") : gl::Program{};
     layeredMips_ = epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array");
     downsample_ = gl::Program::build({.vertex = "src/shadows/moments/downsample.vert",
                                       .fragment = "src/shadows/moments/downsample.frag",
@@ -164,14 +162,14 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     const int levels = mipmaps_ ? std::min(1 + static_cast<int>(std::log2(res)), maxLod_ + 1) : 1;
     const bool msaa = msaa_;
     if (m.resolution == res && m.depthResolution == depth.resolution && m.cube == depth.cube && m.format == format() &&
-        m.rawFormat == rawFormat() && m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
+        m.rawMoments == !firstOrderRaw() && m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
         return;
     m = LightMoments{};
     m.resolution = res;
     m.depthResolution = depth.resolution;
     m.cube = depth.cube;
     m.format = format();
-    m.rawFormat = rawFormat();
+    m.rawMoments = !firstOrderRaw();
     m.levels = levels;
     if (m.cube) {
         GLuint id = 0;
@@ -185,11 +183,19 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     }
     m.moments.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     m.moments.setWrap(GL_CLAMP_TO_EDGE);
-    m.raw = gl::Texture::create2D(m.rawFormat, res, res);
-    m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
-    m.raw.setWrap(GL_CLAMP_TO_EDGE);
     m.rasterDepth = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, res, res);
-    m.rawTarget = gl::Framebuffer::colourAndDepth(m.raw, m.rasterDepth, "unblurred moments");
+    if (m.rawMoments) {
+        m.raw = gl::Texture::create2D(m.format, res, res);
+        m.raw.setFilter(GL_LINEAR, GL_LINEAR);  // blur_bilinear.frag
+        m.raw.setWrap(GL_CLAMP_TO_EDGE);
+        m.rawTarget = gl::Framebuffer::colourAndDepth(m.raw, m.rasterDepth, "unblurred moments");
+    } else {  // blur_box_first_order.frag gathers the depths, clamped to the edges
+        m.rasterDepth.setFilter(GL_NEAREST, GL_NEAREST);
+        m.rasterDepth.setWrap(GL_CLAMP_TO_EDGE);
+        m.depthTarget.attach(GL_DEPTH_ATTACHMENT, m.rasterDepth);
+        m.depthTarget.setNoColor();
+        m.depthTarget.checkComplete("moment raster depth");
+    }
     if (msaa) {  // llvmpipe offers at most 4 samples
         m.multisampledDepth = gl::Texture::create2DMultisample(GL_DEPTH_COMPONENT32F, depth.resolution, depth.resolution, 4);
         m.multisampledTarget.attach(GL_DEPTH_ATTACHMENT, m.multisampledDepth);
@@ -298,10 +304,14 @@ void MomentShadowMap::rasterMoments(std::size_t i, std::size_t face, const gl::F
     target.bind();
     glViewport(0, 0, m.resolution, m.resolution);
     glScissor(texels.x, texels.y, texels.z - texels.x, texels.w - texels.y);
-    const glm::vec4 none = &target == &m.rawTarget ? farRaw() : farMoments();  // the raw map may hold first-order values alone
     const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &farDepth);
+    if (&target == &m.depthTarget) {  // depth alone, whose fragment stage is empty: the box takes the moments
+        frame.drawCasters(maps_.depthProgram(), casterSelection(frame, i, face, texels, Motion::Any));
+        return;
+    }
+    const glm::vec4 none = farMoments();
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, &none.x);
     setMomentUniforms(*casterMoments_, space, exponents());
     frame.drawCasters(*casterMoments_, casterSelection(frame, i, face, texels, Motion::Any));
 }
@@ -421,7 +431,7 @@ MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t f
     std::optional<gl::DebugGroup> part(std::in_place, "raster");
     // The unblurred moments only where the blur reads them (none where no caster reaches).
     const TexelRect drawn = blurTaps_ > 0 ? intersection(readBy(blurred), readBy(reached)) : blurred;
-    const gl::Framebuffer& rasterTarget = blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0];
+    const gl::Framebuffer& rasterTarget = !m.rawMoments ? m.depthTarget : blurTaps_ > 0 ? m.rawTarget : m.levelTargets[face][0];
     if (!isEmpty(drawn) && m.multisampledDepth.id() != 0)
         convertMultisampled(i, face, rasterTarget, drawn, frame);
     else if (!isEmpty(drawn))
@@ -463,10 +473,18 @@ MomentShadowMap::FaceLevels MomentShadowMap::update(std::size_t i, std::size_t f
             clearOutside(level, levels.rect[level], levels.reached[level]);
         }
     } else if (blurTaps_ > 0 && !isEmpty(reached)) {
-        blur_.use();
-        if (onePass) {  // raw -> map, x and y at once
+        const LightSpace& space = (*frame.lightSpaces)[i];
+        const gl::Program& blur = !m.rawMoments && space.perspective ? perspectiveBlur_ : blur_;
+        blur.use();
+        if (onePass) {  // raw (or the raster's depth) -> map, x and y at once
             m.levelTargets[face][0].bind();
-            m.raw.bind(0);
+            if (m.rawMoments) {
+                m.raw.bind(0);
+            } else {
+                m.rasterDepth.bind(0);
+                setMomentUniforms(blur, space, exponents());
+                blur.set("uFarFirstOrder", farFirstOrder());
+            }
             scissor(reached);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         } else {  // separable Gaussian: raw -> scratch (x), scratch -> map (y)

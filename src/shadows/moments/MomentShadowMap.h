@@ -15,8 +15,8 @@ namespace penumbra::shadows {
 // VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
 // moments are drawn straight into a map of their own resolution with its own depth buffer
 // (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a
-// 2 x 2 box by default, from the first-order values the raster drew, blur_box_first_order.frag;
-// or a Gaussian) and optionally mip-mapped for trilinear/anisotropic
+// 2 x 2 box by default, from a raster of depth alone, blur_box_first_order.frag; or a Gaussian)
+// and optionally mip-mapped for trilinear/anisotropic
 // filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
 // depth is drawn only under the translucent casters, as its depth test
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
@@ -54,10 +54,12 @@ private:
         int resolution = 0;       // of the moments
         int depthResolution = 0;  // of the depth map they come from
         bool cube = false;
-        GLenum format = 0, rawFormat = 0;
+        GLenum format = 0;
+        bool rawMoments = false;  // whether `raw` is made (not with firstOrderRaw)
         int levels = 1;
         gl::Texture moments;
-        // 2D: the unblurred moments of one face, and those blurred along x (made for radii over 1)
+        // 2D: the unblurred moments of one face (but with firstOrderRaw, whose box reads rasterDepth),
+        // and those blurred along x (made for radii over 1)
         gl::Texture raw, scratch;
         // Per face, per mip level: a render target (level 0's with rasterDepth), and a view of the
         // level alone (compute_blur's images).
@@ -73,6 +75,7 @@ private:
         std::vector<std::vector<TexelRect>> holds;
         gl::Framebuffer rawTarget, scratchTarget;  // rawTarget: raw with rasterDepth
         gl::Texture rasterDepth;  // the casters' own raster (not with MSAA), at the moments' resolution
+        gl::Framebuffer depthTarget;  // rasterDepth alone: firstOrderRaw's raster
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;
     };
@@ -132,12 +135,14 @@ private:
     ProgramKey built_{-1, false, -1, false, false, false};  // programKey() when last built
     // Built with blur_box.frag: the moments' raster is shifted by half a texel.
     bool boxBlur() const { return boxKernel(std::get<0>(built_), std::get<1>(built_), std::get<2>(built_)); }
-    // The box from a raw map of first-order values alone (VSM's x, ESM's e^{c x}, EVSM's (p, n),
-    // MSM's t), raised to their moments in its pass (blur_box_first_order.frag): built for the
-    // box without MSAA or the compute blur, which read or write every moment.
+    // The box from the casters' depth alone: the raster draws depth only (DepthAndTintMaps'
+    // depth program), and the box's pass takes the first-order values of the four depths it gathers
+    // (VSM's x, ESM's e^{c x}, EVSM's (p, n), MSM's t) to their moments (blur_box_first_order.frag).
+    // Built for the box without MSAA or the compute blur, which read or write every moment.
     bool firstOrderRaw() const;
-    GLenum rawFormat() const;  // of LightMoments::raw
-    glm::vec4 farRaw() const;  // what the raw map holds where no caster is
+    // The first-order values where no caster is (depth 1), as the CPU's farMoments raises them:
+    // blur_box_first_order.frag's uFarFirstOrder.
+    glm::vec2 farFirstOrder() const;
     // The coarsest mip level made, and so read: it bounds how far a lookup reads
     // (filterReachTexels), so that a ground is drawn, blurred and mip-mapped only around the
     // shadows on it.
@@ -148,6 +153,10 @@ private:
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_, downsample_;  // toMoments_: MSAA's conversion
+    // With firstOrderRaw, blur_ takes an orthographic light's depth as it is, and this one
+    // linearises a perspective light's (moments.glsl's LIGHT_PERSPECTIVE): llvmpipe would run the
+    // division of every gathered depth under a uniform branch too (msm's box 4.8 -> 6.5 ms).
+    gl::Program perspectiveBlur_;
     // downsample_ writes gl_Layer from its vertex shader (GL_ARB_shader_viewport_layer_array): one
     // draw per level for all six faces of a cube; without it, one per face.
     bool layeredMips_ = false;

@@ -1,6 +1,6 @@
 // What a moment map stores, in every warp of MomentWarp.h: x = linear depth remapped to [-1, 1],
 // t = linear depth in [0, 1]. Shared by the casters' raster (caster_moments.frag), the
-// conversion of a multisampled depth map (moments.frag) and the box from first-order values
+// conversion of a multisampled depth map (moments.frag) and the box from the raster's depth
 // (blur_box_first_order.frag), and matched on the CPU by MomentShadowMap::farMoments for the
 // clear where no caster is.
 // MOMENT_WARP is a compile-time constant (MomentShadowMap::buildPrograms): llvmpipe runs every
@@ -9,14 +9,19 @@
 #include "src/shadows/moments/MomentWarp.h"
 
 const int kWarp = MOMENT_WARP;  // kWarp*
+#ifdef LIGHT_PERSPECTIVE  // compiled in: blur_box_first_order.frag linearises four depths a texel
+const bool kPerspective = LIGHT_PERSPECTIVE != 0;
+#else
 uniform int uPerspective;
+#define kPerspective (uPerspective != 0)
+#endif
 uniform float uNear, uFar;
 uniform vec2 uExponents;  // c+, c-
 
 // The first-order values of one depth, those the moments are powers of: VSM's x, ESM's e^{c+ x},
 // EVSM's p = e^{c+ x} and (EVSM4) n = -e^{-c- x}, MSM's t.
 vec2 firstOrderOf(float z) {
-    float t = uPerspective != 0 ? perspectiveLinearDepth(z, uNear, uFar) : z;
+    float t = kPerspective ? perspectiveLinearDepth(z, uNear, uFar) : z;
     float x = 2.0 * t - 1.0;
     if (kWarp == kWarpVariance) return vec2(x, 0.0);
     if (kWarp == kWarpExponential || kWarp == kWarpExponentialVariance2) return vec2(exp(uExponents.x * x), 0.0);
@@ -41,13 +46,8 @@ vec4 meanMoments(vec4 a, vec4 n) {
 #endif
 }
 
-// What the casters' raster writes for one depth: its first-order values where the box raises
-// them to their moments (RAW_FIRST_ORDER), else its moments.
+// The moments of one depth.
 vec4 momentsOf(float z) {
     vec2 v = firstOrderOf(z);
-#if RAW_FIRST_ORDER
-    return vec4(v, 0.0, 0.0);
-#else
     return meanMoments(vec4(v.x), vec4(v.y));
-#endif
 }
