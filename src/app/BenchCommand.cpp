@@ -161,13 +161,15 @@ void printScaling(const std::vector<bench::CaseResult>& results) {
 void printFloorRatios(const std::vector<bench::CaseResult>& results) {
     const auto ratios = bench::floorRatios(results);
     if (ratios.empty()) return;
-    std::printf("against the floor (same scene and map size; frame: wall-clock means, shadow pass: GPU medians):\n");
+    std::printf("against the floor (same scene, map size and round; frame: wall-clock means; shadow pass: glFinish wall "
+                "clocks with --calibrate, else GPU medians, which llvmpipe can misplace):\n");
     for (const auto& q : ratios) {
         std::printf("  %-30.30s @%-14.14s", q.label.c_str(), q.sceneName.c_str());
+        if (q.round > 0) std::printf(" round %d", q.round + 1);
         if (!q.frameFloor.empty()) std::printf("  frame %6.2fx %s", q.frame, q.frameFloor.c_str());
         if (q.shadowPass > 0)
-            std::printf("  shadow pass %6.2fx %s (%zu shadowed light%s; the floor draws 1)", q.shadowPass, bench::kFloorDepth, q.lights,
-                        q.lights == 1 ? "" : "s");
+            std::printf("  shadow pass %6.2fx %s by %s (%zu shadowed light%s; the floor draws 1)", q.shadowPass, bench::kFloorDepth,
+                        q.shadowPassByWall ? "wall" : "query", q.lights, q.lights == 1 ? "" : "s");
         std::printf("\n");
     }
 }

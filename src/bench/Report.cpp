@@ -43,22 +43,30 @@ std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results
 }
 
 std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results) {
+    // The floor of the case's own round: with --rounds, round 1's floor would divide every round.
     const auto floorCase = [&](const CaseResult& r, const char* floor) -> const CaseResult* {
         for (const CaseResult& f : results)
-            if (f.technique == floor && f.spec.scene == r.spec.scene && f.spec.shadowResolution == r.spec.shadowResolution) return &f;
+            if (f.technique == floor && f.spec.scene == r.spec.scene && f.spec.shadowResolution == r.spec.shadowResolution &&
+                f.spec.round == r.spec.round)
+                return &f;
         return nullptr;
     };
+    const auto shadowWallMs = [](const CaseResult& r) { return r.calibration[static_cast<std::size_t>(render::Pass::Shadow)].wallMs; };
     std::vector<FloorRatio> ratios;
     for (const CaseResult& r : results) {
         if (isFloor(r.technique)) continue;
-        FloorRatio q{caseLabel(r), r.sceneName, "", 0, 0, r.resolutions.size()};
+        FloorRatio q{caseLabel(r), r.sceneName, "", 0, 0, r.resolutions.size(), r.spec.round};
         const bool mapless = r.shadowMemoryBytes == 0;
         if (const CaseResult* f = floorCase(r, mapless ? kFloorUnshadowed : kFloorLambert); f && f->frameMs.mean > 0) {
             q.frameFloor = f->technique;
             q.frame = r.frameMs.mean / f->frameMs.mean;
         }
-        if (const CaseResult* f = floorCase(r, kFloorDepth); f && !mapless && shadowPassMs(*f) > 0)
+        if (const CaseResult* f = floorCase(r, kFloorDepth); f && !mapless && r.calibrated && f->calibrated && shadowWallMs(*f) > 0) {
+            q.shadowPass = shadowWallMs(r) / shadowWallMs(*f);
+            q.shadowPassByWall = true;
+        } else if (f && !mapless && shadowPassMs(*f) > 0) {
             q.shadowPass = shadowPassMs(r) / shadowPassMs(*f);
+        }
         if (!q.frameFloor.empty() || q.shadowPass > 0) ratios.push_back(q);
     }
     return ratios;
@@ -113,6 +121,7 @@ static json floorRatiosJson(const std::vector<CaseResult>& results) {
     for (const FloorRatio& q : floorRatios(results))
         rows.push_back({{"label", q.label}, {"scene_name", q.sceneName}, {"frame_floor", q.frameFloor}, {"frame_ratio", q.frame},
                         {"shadow_pass_ratio_to_floor_depth", q.shadowPass},
+                        {"shadow_pass_measure", q.shadowPassByWall ? "glFinish wall" : "GPU query median"}, {"round", q.round},
                         {"shadowed_lights", q.lights}});
     return rows;
 }

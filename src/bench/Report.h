@@ -64,16 +64,21 @@ struct ScalingFit {
 };
 std::vector<ScalingFit> shadowPassScaling(const std::vector<CaseResult>& results);
 
-// Each case against the floor run on the same scene at the same map size (the speed issue's
-// "≤ 1.2× the bare program"): its wall-clock frame ÷ floor-unshadowed's when it draws no map
-// (none), else ÷ floor-lambert's; its shadow pass (GPU median) ÷ floor-depth's. 0 where that floor
-// case did not run. Floor cases themselves get no row. The floor draws the first light's map
+// Each case against the floor run on the same scene at the same map size in the same round (the
+// speed issue's "≤ 1.2× the bare program"): its wall-clock frame ÷ floor-unshadowed's when it
+// draws no map (none), else ÷ floor-lambert's; its shadow pass ÷ floor-depth's. 0 where that
+// floor case did not run. Floor cases themselves get no row. The floor draws the first light's map
 // only: `lights` says how many the case drew.
+// The shadow pass is the glFinish-bounded wall clock where both cases were calibrated (`bench
+// --calibrate`), else the GPU queries' median: on llvmpipe floor-depth's query read 7-8 ms in some
+// frames and 14-19 in others of one run (the 98k grid, 2048²), its wall clock 10.6-10.9 ms.
 struct FloorRatio {
     std::string label, sceneName;
     std::string frameFloor;  // the floor case the frame is divided by ("" when none ran)
     double frame = 0, shadowPass = 0;
     std::size_t lights = 0;  // shadowed lights of the case
+    int round = 0;
+    bool shadowPassByWall = false;  // shadowPass from the calibration's wall clocks
 };
 std::vector<FloorRatio> floorRatios(const std::vector<CaseResult>& results);
 

@@ -107,6 +107,40 @@ TEST(FloorRatios, DivideEachCaseByTheFloorOfItsOwnSceneAndKind) {
     EXPECT_EQ(ratios[1].lights, 2u);
 }
 
+// With --rounds, each round's case goes against the floor of its own round (round 1's floor had
+// divided every round: the 98k grid's vsm read 0.72x floor-depth where its own rounds gave
+// 0.92-0.95); with --calibrate on both, the shadow pass by the glFinish wall clocks, which
+// llvmpipe's queries can misplace (floor-depth's query 7-19 ms a frame, its wall 10.6-10.9).
+TEST(FloorRatios, TakeTheFloorOfTheCasesOwnRoundAndItsWallClockWhenCalibrated) {
+    const auto inRound = [](CaseResult r, int round) {
+        r.spec.round = round;
+        return r;
+    };
+    const std::vector<CaseResult> results{
+        inRound(floorCase(kFloorDepth, "a", 6, 4, 16), 0), inRound(floorCase("vsm", "a", 50, 2, 48), 0),
+        inRound(floorCase(kFloorDepth, "a", 6, 8, 16), 1), inRound(floorCase("vsm", "a", 50, 2, 48), 1)};
+    std::vector<FloorRatio> ratios = floorRatios(results);
+    ASSERT_EQ(ratios.size(), 2u);
+    EXPECT_DOUBLE_EQ(ratios[0].shadowPass, 0.5);
+    EXPECT_DOUBLE_EQ(ratios[1].shadowPass, 0.25) << "round 2 against round 2's floor";
+    EXPECT_EQ(ratios[1].round, 1);
+    EXPECT_FALSE(ratios[1].shadowPassByWall);
+
+    std::vector<CaseResult> calibrated = results;
+    const auto shadow = static_cast<std::size_t>(render::Pass::Shadow);
+    for (CaseResult& r : calibrated) {
+        r.calibrated = true;
+        r.calibration[shadow].wallMs = r.technique == kFloorDepth ? 10.0 : 12.0;
+    }
+    ratios = floorRatios(calibrated);
+    ASSERT_EQ(ratios.size(), 2u);
+    EXPECT_DOUBLE_EQ(ratios[0].shadowPass, 1.2);
+    EXPECT_DOUBLE_EQ(ratios[1].shadowPass, 1.2);
+    EXPECT_TRUE(ratios[1].shadowPassByWall);
+    calibrated[2].calibrated = false;  // round 2's floor measured by its queries alone: both by queries
+    EXPECT_DOUBLE_EQ(floorRatios(calibrated)[1].shadowPass, 0.25);
+}
+
 // Two frames in flight let a frame's wall time move into its neighbour's (llvmpipe, hard on
 // scenes/glass.json: 8-23 and 83-113 ms in turn): the plain median of an odd count lands on one
 // side, the median over consecutive pairs on their mean.
