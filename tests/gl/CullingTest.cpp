@@ -184,6 +184,19 @@ TEST(Culling, AGroundCarryingCastersIsDrawnOnlyWhereTheirLookupsRead) {
 // pixels as every caster drawn whole into maps redrawn every frame; fewer than half the
 // moment texels other than the far plane's (0.18 against 0.43 under the sun); under a sun and a
 // spot light. Not MSM, whose pixels it would change (MomentShadowMap::filterReachTexels).
+// The share of light 0's moment texels, every level, whose first moment is not the far plane's
+// (`far`, what a texel holds where no caster is).
+double shareOfMomentsNotFar(const render::Renderer& renderer, float far) {
+    for (const shadows::DebugView& view : renderer.technique().debugViews()) {
+        if (view.label != "light 0 moments") continue;
+        const std::vector<float> moments = textureLevels(view);
+        std::size_t near = 0;
+        for (std::size_t i = 0; i < moments.size(); i += 4) near += moments[i] < 0.999f * far;
+        return static_cast<double>(near) / static_cast<double>(moments.size() / 4);
+    }
+    return -1.0;
+}
+
 TEST(Culling, AGroundUnderMomentMapsIsKeptOnlyAroundTheShadowsOnIt) {
     const std::string lights[] = {
         R"({ "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } })",
@@ -215,17 +228,7 @@ TEST(Culling, AGroundUnderMomentMapsIsKeptOnlyAroundTheShadowsOnIt) {
                 options.onlyCastersThatShadow = false;
                 render::Renderer every(s, options);
                 render::OffscreenTarget target(96, 64);
-                // The share of the moments' texels, every level, other than the far plane's.
-                const auto cast = [&t](const render::Renderer& renderer) {
-                    for (const shadows::DebugView& view : renderer.technique().debugViews()) {
-                        if (view.label != "light 0 moments") continue;
-                        const std::vector<float> moments = textureLevels(view);
-                        std::size_t near = 0;
-                        for (std::size_t i = 0; i < moments.size(); i += 4) near += moments[i] < 0.999f * t.far;
-                        return static_cast<double>(near) / static_cast<double>(moments.size() / 4);
-                    }
-                    return -1.0;
-                };
+                const auto cast = [&t](const render::Renderer& renderer) { return shareOfMomentsNotFar(renderer, t.far); };
                 for (float time : {0.0f, 0.5f, 1.0f, 1.5f, 2.0f}) {
                     kept.render(time, s.camera, 96, 64, target.framebuffer());
                     const std::vector<float> keptPixels = kept.readLinear();
@@ -243,6 +246,39 @@ TEST(Culling, AGroundUnderMomentMapsIsKeptOnlyAroundTheShadowsOnIt) {
                 EXPECT_LT(around, 0.5 * whole) << what << ": the ground around the box and the sphere";
                 EXPECT_GT(around, 0.0) << what;
             }
+}
+
+// Under a field of floating objects (16 spheres over a wide ground, as the osgShadow grid's 100)
+// a moment map's ground is still drawn around their shadows alone: its rectangle leaves the far
+// ground out whatever the number of casters over it (with stop 73's limit of 8 it was drawn whole:
+// the same share as every caster's). The same pixels as every caster drawn whole.
+TEST(Culling, AGroundUnderAFieldOfCastersIsKeptAroundThemInMomentMaps) {
+    std::string objects = R"({ "shape": "plane", "size": [40, 40] })";
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 4; ++k)
+            objects += R"(, { "shape": "sphere", "radius": 0.4, "position": [)" + std::to_string(2 * i - 3) + ", 1.5, " +
+                       std::to_string(2 * k - 3) + "] }";
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 12, 16], "target": [0, 0, 0], "fov_deg": 60 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
+      "objects": [ )" + objects + R"( ] })");
+    render::RenderOptions options;
+    options.technique = "vsm";
+    options.output = OutputMode::Visibility;
+    options.reuseStillCasters = false;
+    render::Renderer cut(s, options);
+    options.onlyCastersThatShadow = false;
+    render::Renderer every(s, options);
+    render::OffscreenTarget target(96, 64);
+    cut.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    const std::vector<float> pixels = cut.readLinear();
+    every.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    EXPECT_EQ(differingPixels(every.readLinear(), pixels, 0.0f), 0u);
+    const double whole = shareOfMomentsNotFar(every, 1.0f), around = shareOfMomentsNotFar(cut, 1.0f);
+    std::printf("moment texels not the far plane's: %.3f, every caster %.3f\n", around, whole);
+    EXPECT_GT(whole, 0.4) << "the ground fills the light's view, about it";
+    EXPECT_LT(around, 0.5 * whole) << "the ground around the field of spheres";
+    EXPECT_GT(around, 0.0);
 }
 
 // A live renderer decides it again when the scene changes: a sphere floating over a ground leaves
