@@ -241,7 +241,8 @@ static void nowHolds(TexelRect& holds, const TexelRect& rect, const TexelRect& r
 float MomentShadowMap::filterReachTexels() const {
     // Not MSM's: its bound is not monotonic in the moments as Chebyshev's and the exponential
     // warps' are, so a ground's own texels read as the far plane's do not light it exactly
-    // (CullingTest: visibility up to 0.033 apart under a sun).
+    // (CullingTest's scene: visibility up to 0.033 apart under a sun; on a 40 m ground 0.018-0.177
+    // at twice this reach, up to 0.05 at four times: docs/measurements.md, stop 74).
     if (warp_ == Warp::Moments4 || (mipmaps_ && anisotropy_ > 1)) return -1.0f;
     const int taps = boxKernel(blurRadius_, halfResolution_, blurKernel_) ? 1 : gaussianTaps(blurRadius_, halfResolution_);
     const float blur = blurRadius_ > 0 ? static_cast<float>(taps) + 1.0f : 0.5f;
