@@ -80,8 +80,9 @@ bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const War
         if (glm::dot(held.clipPlane, glm::vec4(p, 1.0f)) < 0.0f) return false;
     }
     // The resolution cancels out of the ratio.
+    const AcrossLight across(lightDirection);
     for (const glm::vec3& p : body.visible)
-        if (warpedTexelWorld(held.shadowMatrix, p, lightDirection, 1) > coarser * warpedTexelWorld(fitted.shadowMatrix, p, lightDirection, 1))
+        if (warpedTexelWorld(held.shadowMatrix, p, across, 1) > coarser * warpedTexelWorld(fitted.shadowMatrix, p, across, 1))
             return false;
     return true;
 }
@@ -239,13 +240,21 @@ WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, co
     return warpedViewHolds(*last, fitted, body, lightDirection, kHeldCoarser) ? *last : withRoom(fitted, kBoxSlack);
 }
 
+AcrossLight::AcrossLight(const glm::vec3& lightDirection) {
+    const glm::vec3 d = glm::normalize(lightDirection);
+    e1 = glm::normalize(glm::cross(d, anyPerpendicular(d)));
+    e2 = glm::cross(d, e1);
+}
+
 float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& lightDirection, int resolution) {
+    return warpedTexelWorld(s, P, AcrossLight(lightDirection), resolution);
+}
+
+float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const AcrossLight& across, int resolution) {
     const glm::vec4 h = s * glm::vec4(P, 1.0f);
     const glm::vec2 uv = glm::vec2(h) / h.w;
-    const glm::vec3 d = glm::normalize(lightDirection);
-    const glm::vec3 e1 = glm::normalize(glm::cross(d, anyPerpendicular(d))), e2 = glm::cross(d, e1);
     float gain = std::numeric_limits<float>::max();
-    for (const glm::vec3& e : {e1, e2}) {
+    for (const glm::vec3& e : {across.e1, across.e2}) {
         // d(uv)/dP · e = (S_xy e - uv S_w e) / w
         const glm::vec4 se = s * glm::vec4(e, 0.0f);
         gain = std::min(gain, glm::length((glm::vec2(se) - uv * se.w) / h.w));

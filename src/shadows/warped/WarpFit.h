@@ -97,8 +97,17 @@ bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const War
 // single frame is as it was.
 WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection);
 
+// Two unit directions across a light, perpendicular to it and to each other: where
+// warpedTexelWorld measures a texel. Made once for a loop over many points: the fits measure
+// every corner of the camera's body (the 98k grid's 2,420; psm's fit 1.30 -> 1.07 ms a frame).
+struct AcrossLight {
+    explicit AcrossLight(const glm::vec3& lightDirection);
+    glm::vec3 e1, e2;
+};
+
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
 // perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.
+float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const AcrossLight& across, int resolution);
 float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const glm::vec3& lightDirection, int resolution);
 
 }  // namespace penumbra::shadows

@@ -75,6 +75,7 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
     fitKey_ = fitKey;
     grid_ = grid;
     float coarsest = plain.texelScale;  // of the maps on the bodies their pixels lie in
+    const AcrossLight across(sun.direction);
     reachView_.reset();
     std::vector<WarpedView> views;
     for (int r = 0; r < grid.y; ++r)
@@ -95,7 +96,7 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
             // Over the body's corners; a margin for texels that grow faster than linearly between
             // them (PSM's double projection).
             for (const glm::vec3& p : body.visible)
-                coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, sun.direction, plain.resolution));
+                coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, across, plain.resolution));
             if (grid == glm::ivec2(1))
                 reachView_ = ReachView{tile, frame.sceneBounds, warpBodyMargin(frame.sceneBounds), sun.direction, plain.resolution};
             views.push_back(v);
@@ -121,9 +122,10 @@ float WarpedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& r
     if (glm::any(glm::greaterThan(grown.min, grown.max))) return 2.0f;  // outside the scene: no receiver there
     const WarpedView& view = views_.front();
     float coarsest = plainTexel_;
+    const AcrossLight across(reachView_->lightDirection);
     for (const glm::vec3& p : frustumInsideBox(reachView_->frustum, grown)) {
         if (!((view.shadowMatrix * glm::vec4(p, 1.0f)).w > 0.0f)) return reachTexels_;
-        coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(view.shadowMatrix, p, reachView_->lightDirection, reachView_->resolution));
+        coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(view.shadowMatrix, p, across, reachView_->resolution));
     }
     return std::min(reachInPlainTexels(coarsest, plainTexel_, normalOffset_), reachTexels_);
 }
