@@ -12,12 +12,12 @@
 
 namespace penumbra::shadows {
 
-// VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters'
-// moments are drawn straight into a map of their own resolution with its own depth buffer
-// (caster_moments.frag; with MSAA, converted from a multisampled depth map instead), blurred (a
-// 2 x 2 box by default, from a raster of depth alone, blur_box_first_order.frag; or a Gaussian)
-// and optionally mip-mapped for trilinear/anisotropic
-// filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
+// VSM, ESM, EVSM (2 and 4 components) and MSM: one class, the warp differs. The opaque casters are
+// drawn straight into a map of the moments' resolution with its own depth buffer: depth alone for
+// the default 2 x 2 box, whose pass takes the moments of the four depths it gathers
+// (blur_box_first_order.frag); their moments for a Gaussian (caster_moments.frag; with MSAA,
+// converted from a multisampled depth map instead). Then blurred, and optionally mip-mapped for
+// trilinear/anisotropic filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
 // depth is drawn only under the translucent casters, as its depth test
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
 // While the still casters and the light stay put, only the rectangle the animated casters cover

@@ -1,7 +1,7 @@
 #version 450 core
 // The box pre-filter (`blur_kernel=auto` at blur_radius 1-2 and half resolution; `box` at any
 // radius) over a raw map of every moment, which MSAA's conversion makes (otherwise the casters
-// write first-order values: blur_box_first_order.frag, the same box):
+// write depth alone and blur_box_first_order.frag takes its moments, the same box):
 // a 2 x 2 box of moment texels in one bilinear fetch, at the corner texel p shares with
 // p + (1, 1). The box's centre lies half a texel past p's, so the casters' moments are drawn half a
 // texel the other way (MomentShadowMap::rasterMoments): each output texel is then the mean of the
