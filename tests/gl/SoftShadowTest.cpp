@@ -452,9 +452,9 @@ TEST_P(MomentComputeBlur, MakesTheMomentsOfTheFragmentPasses) {
     EXPECT_EQ(momentMaps, 2) << "the sun's and the spot light's moments";
 }
 
-// The raw map holds first-order values for the box and every moment with MSAA or the compute blur
-// (MomentShadowMap::firstOrderRaw): switched on a live renderer and back, the programs and the raw
-// map are made again, and each picture equals a fresh renderer's.
+// The box reads the casters' raster of depth alone, MSAA and the compute blur a raw map of every
+// moment (MomentShadowMap::boxFromDepth): switched on a live renderer and back, the programs and the
+// raster's targets are made again, and each picture equals a fresh renderer's.
 TEST_P(MomentComputeBlur, SwitchedOnALiveRendererAndBackMatchesFreshOnes) {
     scene::Scene s = sceneFromJson(kThreeLightsScene);
     const std::string technique = GetParam();

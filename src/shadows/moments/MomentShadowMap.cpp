@@ -29,7 +29,7 @@ bool MomentShadowMap::boxKernel(int radius, bool halfResolution, int kernel) {
     return radius > 0 && (kernel == kBlurBox || (kernel == kBlurAuto && gaussianTaps(radius, halfResolution) == 1));
 }
 
-bool MomentShadowMap::firstOrderRaw() const {
+bool MomentShadowMap::boxFromDepth() const {
     const bool msaa = std::get<4>(built_), compute = std::get<5>(built_);
     return boxBlur() && !msaa && !compute;
 }
@@ -43,7 +43,7 @@ glm::vec2 MomentShadowMap::farFirstOrder() const {
 // The warp, the blur radius and the downsampling are compiled in (caster_moments.frag,
 // moments.frag, blur.frag, blur_bilinear.frag): rebuilt when a parameter changes them.
 void MomentShadowMap::buildPrograms() {
-    built_ = programKey();  // firstOrderRaw() reads it
+    built_ = programKey();  // boxFromDepth() reads it
     const bool box = boxKernel(blurRadius_, halfResolution_, blurKernel_);
     const int taps = box ? 1 : gaussianTaps(blurRadius_, halfResolution_);
     const float sigma = std::max(0.5f * static_cast<float>(blurRadius_) / (halfResolution_ ? 2.0f : 1.0f), 0.5f);
@@ -59,17 +59,17 @@ void MomentShadowMap::buildPrograms() {
         {.vertex = "shaders/passes/fullscreen.vert", .fragment = "src/shadows/moments/moments.frag", .defines = defines});
     // The box in one bilinear fetch; the Gaussian of radius 1 in one pass of four, larger ones in two
     // separable passes (see update).
-    const char* blur = box && firstOrderRaw() ? "src/shadows/moments/blur_box_first_order.frag"
+    const char* blur = box && boxFromDepth() ? "src/shadows/moments/blur_box_first_order.frag"
                        : box              ? "src/shadows/moments/blur_box.frag"
                        : taps == 1 ? "src/shadows/moments/blur_bilinear.frag"
                                    : "src/shadows/moments/blur.frag";
     const auto blurFor = [&](const char* perspective) {
         std::vector<std::string> d = defines;
-        if (firstOrderRaw()) d.push_back(std::string("LIGHT_PERSPECTIVE ") + perspective);
+        if (boxFromDepth()) d.push_back(std::string("LIGHT_PERSPECTIVE ") + perspective);
         return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = blur, .defines = d});
     };
     blur_ = blurFor("0");
-    perspectiveBlur_ = firstOrderRaw() ? blurFor("1") : gl::Program{};
+    perspectiveBlur_ = boxFromDepth() ? blurFor("1") : gl::Program{};
     layeredMips_ = epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array");
     downsample_ = gl::Program::build({.vertex = "src/shadows/moments/downsample.vert",
                                       .fragment = "src/shadows/moments/downsample.frag",
@@ -162,14 +162,14 @@ void MomentShadowMap::ensure(std::size_t i, const DepthAndTintMaps::LightMaps& d
     const int levels = mipmaps_ ? std::min(1 + static_cast<int>(std::log2(res)), maxLod_ + 1) : 1;
     const bool msaa = msaa_;
     if (m.resolution == res && m.depthResolution == depth.resolution && m.cube == depth.cube && m.format == format() &&
-        m.rawMoments == !firstOrderRaw() && m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
+        m.rawMoments == !boxFromDepth() && m.levels == levels && (m.multisampledDepth.id() != 0) == msaa)
         return;
     m = LightMoments{};
     m.resolution = res;
     m.depthResolution = depth.resolution;
     m.cube = depth.cube;
     m.format = format();
-    m.rawMoments = !firstOrderRaw();
+    m.rawMoments = !boxFromDepth();
     m.levels = levels;
     if (m.cube) {
         GLuint id = 0;

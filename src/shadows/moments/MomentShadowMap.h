@@ -17,8 +17,8 @@ namespace penumbra::shadows {
 // the default 2 x 2 box, whose pass takes the moments of the four depths it gathers
 // (blur_box_first_order.frag); their moments for a Gaussian (caster_moments.frag; with MSAA,
 // converted from a multisampled depth map instead). Then blurred, and optionally mip-mapped for
-// trilinear/anisotropic filtering. Coloured tint from translucent casters comes from the shared tint map, whose opaque
-// depth is drawn only under the translucent casters, as its depth test
+// trilinear/anisotropic filtering. Coloured tint from translucent casters comes from the shared
+// tint map, whose opaque depth is drawn only under the translucent casters, as its depth test
 // (DepthAndTintMaps::kEveryLight): nothing here reads it.
 // While the still casters and the light stay put, only the rectangle the animated casters cover
 // now or covered last frame is drawn, blurred and mip-mapped again, widened by the blur's reach.
@@ -55,10 +55,10 @@ private:
         int depthResolution = 0;  // of the depth map they come from
         bool cube = false;
         GLenum format = 0;
-        bool rawMoments = false;  // whether `raw` is made (not with firstOrderRaw)
+        bool rawMoments = false;  // whether `raw` is made (not with boxFromDepth)
         int levels = 1;
         gl::Texture moments;
-        // 2D: the unblurred moments of one face (but with firstOrderRaw, whose box reads rasterDepth),
+        // 2D: the unblurred moments of one face (but with boxFromDepth, whose box reads rasterDepth),
         // and those blurred along x (made for radii over 1)
         gl::Texture raw, scratch;
         // Per face, per mip level: a render target (level 0's with rasterDepth), and a view of the
@@ -75,7 +75,7 @@ private:
         std::vector<std::vector<TexelRect>> holds;
         gl::Framebuffer rawTarget, scratchTarget;  // rawTarget: raw with rasterDepth
         gl::Texture rasterDepth;  // the casters' own raster (not with MSAA), at the moments' resolution
-        gl::Framebuffer depthTarget;  // rasterDepth alone: firstOrderRaw's raster
+        gl::Framebuffer depthTarget;  // rasterDepth alone: boxFromDepth's raster
         gl::Texture multisampledDepth;  // 4x MSAA depth, re-rendered per face when MSAA is on
         gl::Framebuffer multisampledTarget;
     };
@@ -139,7 +139,7 @@ private:
     // depth program), and the box's pass takes the first-order values of the four depths it gathers
     // (VSM's x, ESM's e^{c x}, EVSM's (p, n), MSM's t) to their moments (blur_box_first_order.frag).
     // Built for the box without MSAA or the compute blur, which read or write every moment.
-    bool firstOrderRaw() const;
+    bool boxFromDepth() const;
     // The first-order values where no caster is (depth 1), as the CPU's farMoments raises them:
     // blur_box_first_order.frag's uFarFirstOrder.
     glm::vec2 farFirstOrder() const;
@@ -153,7 +153,7 @@ private:
     DepthAndTintMaps maps_;
     std::vector<LightMoments> moments_;
     gl::Program toMoments_, blur_, downsample_;  // toMoments_: MSAA's conversion
-    // With firstOrderRaw, blur_ takes an orthographic light's depth as it is, and this one
+    // With boxFromDepth, blur_ takes an orthographic light's depth as it is, and this one
     // linearises a perspective light's (moments.glsl's LIGHT_PERSPECTIVE): llvmpipe would run the
     // division of every gathered depth under a uniform branch too (msm's box 4.8 -> 6.5 ms).
     gl::Program perspectiveBlur_;

@@ -1,5 +1,5 @@
 #version 450 core
-// blur_box.frag's 2 x 2 box from the casters' depth alone (MomentShadowMap::firstOrderRaw): one
+// blur_box.frag's 2 x 2 box from the casters' depth alone (MomentShadowMap::boxFromDepth): one
 // textureGather fetches the four depths around the corner p shares with p + (1, 1), and their
 // first-order values (moments.glsl's firstOrderOf) are taken to their mean moments here. The
 // casters' raster writes depth only, through an empty fragment stage. On llvmpipe (every map
