@@ -6,6 +6,7 @@
 #include "reference/Comparison.h"
 #include "render/Offscreen.h"
 #include "shadows/cascaded/CascadedShadowMap.h"
+#include "shadows/warped/WarpedShadowMap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -244,6 +245,50 @@ TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
     EXPECT_GT(sdsm.back().splitFar, 19.9f);
     EXPECT_LT(sdsm.back().splitFar, 21.0f);
     EXPECT_LT(sdsm.front().texelWorld, 0.5f * plain.front().texelWorld);
+}
+
+// A warped map's fit is kept while the camera and the objects stand still (WarpedShadowMap::
+// fitViews), and made again when either moves (a small scene, whole in view, so that the sun's
+// plain box does not follow the camera): with every fit the tight one (holdSunBox off), a
+// renderer's views equal those of a fresh renderer that draws that frame alone, after a repeated
+// frame, a moved camera and an object risen (the scene's box grows); and they differ from the
+// frame before where it moved.
+TEST(ViewDependent, AWarpedFitIsKeptWhileNothingMovesAndMadeAgainWhenSomethingDoes) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 9, 12], "target": [0, 0, 0], "fov_deg": 50 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 256 } } ],
+      "objects": [ { "shape": "plane", "size": [6, 6] }, { "shape": "box", "position": [0, 0.5, 0] },
+                   { "shape": "sphere", "radius": 0.5, "animation": [[0, 0, 1, 0], [1, 0, 9, 0]] } ] })");
+    for (const char* technique : {"lispsm", "psm"}) {
+        render::RenderOptions options = optionsFor(technique);
+        options.holdSunBox = false;
+        render::OffscreenTarget target(64, 48);
+        const auto viewsAfter = [&](render::Renderer& renderer, float time) {
+            renderer.render(time, s.camera, 64, 48, target.framebuffer());
+            const auto& warped = dynamic_cast<const shadows::WarpedShadowMap&>(renderer.technique());
+            std::vector<glm::mat4> views;
+            for (const shadows::WarpedView& v : warped.views()) views.push_back(v.viewProj);
+            return views;
+        };
+        const auto fresh = [&](float time) {
+            render::Renderer renderer(s, options);
+            return viewsAfter(renderer, time);
+        };
+        render::Renderer live(s, options);
+        const std::vector<glm::mat4> first = viewsAfter(live, 0.0f);
+        EXPECT_EQ(viewsAfter(live, 0.0f), first) << technique << ": the same frame again";
+        EXPECT_EQ(first, fresh(0.0f)) << technique;
+        const scene::Camera still = s.camera;
+        s.camera.position = glm::vec3(4, 8, 11);  // the scene still whole in view: the sun's box stays
+        const std::vector<glm::mat4> moved = viewsAfter(live, 0.0f);
+        EXPECT_NE(moved, first) << technique << ": the camera moved";
+        EXPECT_EQ(moved, fresh(0.0f)) << technique << ": the camera moved";
+        s.camera = still;
+        viewsAfter(live, 0.0f);
+        const std::vector<glm::mat4> later = viewsAfter(live, 0.75f);
+        EXPECT_NE(later, first) << technique << ": the sphere rose";
+        EXPECT_EQ(later, fresh(0.75f)) << technique << ": the sphere rose";
+    }
 }
 
 }  // namespace

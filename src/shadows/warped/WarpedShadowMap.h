@@ -53,7 +53,11 @@ private:
     glm::mat4 cameraViewProj_{1.0f};
     std::vector<WarpedView> views_;  // this frame's, one per tile (last frame's while fitViews runs)
     std::uint64_t fitKey_ = 0;       // what views_ were fitted under: light, resolution, grid, parameters
+    // Everything fitViews reads (fitKey_, the camera, the objects' boxes, whether the views are held):
+    // the same again refits to the same views, which are kept.
+    std::uint64_t fitInputs_ = 0;
     float reachTexels_ = -1.0f;      // shadowReachTexels
+    float fittedReach_ = -1.0f;      // reachTexels_ as fitViews left it
     // shadowReachTexelsWithin's: the single view's frustum (none with tiles), the scene's box and
     // the body's margin (warpBodyMargin), and what warpedTexelWorld and reachInPlainTexels take.
     struct ReachView {
