@@ -297,8 +297,52 @@ void measureUntilCompiled(const std::vector<CaseRun*>& runs, Measure&& measure) 
     }
 }
 
-// The measurement's summaries, then (settings.calibrate) each pass's query against a glFinish wall
-// clock, and the case's picture.
+// Frames a case is drawn for each of calibrate's and the sub-passes' measures: 3 to 8.
+int calibrationFrames(const BenchSettings& settings) { return std::max(3, std::min(settings.frames > 0 ? settings.frames : 8, 8)); }
+
+// Each pass's query against a glFinish wall clock (settings.calibrate), over a few frames of every
+// case of the group taken in turn, one frame each: a machine that slows within the group moves all
+// its cases alike. (Taken case after case, two of three rounds on the 98k grid had slowed midway,
+// floor-depth's wall reading 15.4 and 16.3 ms against 10.9 in the third: stop 74.)
+void calibrate(const std::vector<CaseRun*>& runs) {
+    if (runs.empty()) return;
+    const BenchSettings& settings = runs.front()->settings;
+    const int n = calibrationFrames(settings);
+    std::vector<std::uint64_t> first;
+    for (CaseRun* run : runs) {
+        run->engine->timer().setCalibration(true);
+        first.push_back(run->frameNumber);
+    }
+    for (int i = 0; i < n; ++i)
+        for (CaseRun* run : runs) run->step();
+    glFinish();
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        CaseResult& r = runs[k]->r;
+        render::FrameTimer& timer = runs[k]->engine->timer();
+        timer.waitForAll();
+        std::array<std::vector<double>, render::kPassCount> query, wall;
+        for (const render::FrameTimes& t : timer.takeFinished()) {
+            if (t.frame < first[k]) continue;
+            for (int p = 0; p < render::kPassCount; ++p) {
+                query[static_cast<std::size_t>(p)].push_back(t.gpu[static_cast<render::Pass>(p)]);
+                wall[static_cast<std::size_t>(p)].push_back(t.wall[static_cast<render::Pass>(p)]);
+            }
+        }
+        for (std::size_t p = 0; p < render::kPassCount; ++p) {
+            PassCalibration& cal = r.calibration[p];
+            cal.queryMs = summarize(query[p]).median;
+            cal.wallMs = summarize(wall[p]).median;
+            const double diff = std::abs(cal.queryMs - cal.wallMs);
+            cal.flagged = diff > 0.1 * std::max(cal.queryMs, cal.wallMs) && diff > 0.1;
+        }
+        r.finishOverheadMs = timer.finishOverheadMs();
+        timer.setCalibration(false);
+        r.calibrated = true;
+    }
+}
+
+// The measurement's summaries, then (settings.calibrate, after calibrate) the passes' parts, and
+// the case's picture.
 void finish(CaseRun& run) {
     CaseResult& r = run.r;
     const BenchSettings& settings = run.settings;
@@ -317,37 +361,11 @@ void finish(CaseRun& run) {
     r.interleaveFrames = settings.interleaveFrames;
 
     Engine& engine = *run.engine;
-    if (settings.calibrate) {
-        // glFinish around every pass: what each pass really takes, against its query.
-        engine.timer().setCalibration(true);
-        const int n = std::max(3, std::min(settings.frames > 0 ? settings.frames : 8, 8));
-        const std::uint64_t first = run.frameNumber;
+    if (settings.calibrate) {  // the passes' parts, in frames of their own: their glFinish calls would weigh on calibrate's
+        const int n = calibrationFrames(settings);
+        render::SubPassClock clock(r.finishOverheadMs);
         for (int i = 0; i < n; ++i) run.step();
-        glFinish();
-        engine.timer().waitForAll();
-        std::array<std::vector<double>, render::kPassCount> query, wall;
-        for (const render::FrameTimes& t : engine.timer().takeFinished()) {
-            if (t.frame < first) continue;
-            for (int p = 0; p < render::kPassCount; ++p) {
-                query[static_cast<std::size_t>(p)].push_back(t.gpu[static_cast<render::Pass>(p)]);
-                wall[static_cast<std::size_t>(p)].push_back(t.wall[static_cast<render::Pass>(p)]);
-            }
-        }
-        for (std::size_t p = 0; p < render::kPassCount; ++p) {
-            PassCalibration& cal = r.calibration[p];
-            cal.queryMs = summarize(query[p]).median;
-            cal.wallMs = summarize(wall[p]).median;
-            const double diff = std::abs(cal.queryMs - cal.wallMs);
-            cal.flagged = diff > 0.1 * std::max(cal.queryMs, cal.wallMs) && diff > 0.1;
-        }
-        r.finishOverheadMs = engine.timer().finishOverheadMs();
-        engine.timer().setCalibration(false);
-        r.calibrated = true;
-        {  // the passes' parts, in frames of their own: their glFinish calls would weigh on the above
-            render::SubPassClock clock(r.finishOverheadMs);
-            for (int i = 0; i < n; ++i) run.step();
-            r.subPassMs = clock.perFrame(n);
-        }
+        r.subPassMs = clock.perFrame(n);
     }
 
     if (settings.images && r.spec.round == 0) {  // later rounds (--rounds) draw the same pictures
@@ -377,6 +395,7 @@ std::vector<CaseResult> runGroup(scene::Scene& scene, const std::vector<BenchCas
         else measureAlone(*runs.front(), measured);  // runBench groups one case then
     });
     std::vector<CaseResult> results;
+    if (settings.calibrate) calibrate(all);
     for (auto& run : runs) finish(*run);
     for (std::size_t i = 0; i < runs.size(); ++i) {
         runs[i]->r.glErrors = gl::debugErrorCount();
