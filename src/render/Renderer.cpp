@@ -6,7 +6,6 @@
 #include "render/LightBlock.h"
 #include "render/LightingProgram.h"
 #include "render/MeshClusters.h"
-#include "shadows/common/MapRegion.h"
 #include "util/Digest.h"
 #include "util/Log.h"
 #include "util/Srgb.h"
@@ -284,6 +283,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return all;
         };
         frame.casterTexels = [&](const shadows::CasterSelection& selection) {
+            using shadows::CasterMap;
             std::vector<OrientedBox::Corners> whole;  // the casters drawn whole
             glm::ivec4 near(0);                       // and the scissors of those drawn near others
             shadows::CasterSelection any = selection;
@@ -292,15 +292,15 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 const auto* boxes = nearOf(static_cast<std::size_t>(&d - draws.data()), selection);
                 if (selected(d, selection)) {
                     if (boxes) {
-                        near = shadows::unite(near, shadows::unite(nearTexels(boxes->still, selection), nearTexels(boxes->moving, selection)));
+                        near = CasterMap::united(near, CasterMap::united(nearTexels(boxes->still, selection), nearTexels(boxes->moving, selection)));
                     } else {
                         whole.push_back(d.worldBounds.corners());
                     }
                 } else if (boxes && selection.motion == shadows::Motion::Moving && selected(d, any)) {
-                    near = shadows::unite(near, nearTexels(boxes->moving, selection));  // a still ground following them
+                    near = CasterMap::united(near, nearTexels(boxes->moving, selection));  // a still ground following them
                 }
             }
-            return shadows::unite(near, selection.map->texelsNear(whole, *selection.lightViewProj, 0.0f));
+            return CasterMap::united(near, selection.map->texelsNear(whole, *selection.lightViewProj, 0.0f));
         };
         frame.casterBoxes = [&](const shadows::CasterSelection& selection) {
             std::vector<scene::Bounds> boxes;

@@ -55,6 +55,8 @@ struct CasterMap {
     // (the whole map where a corner lies behind the eye), grown by the pad (MapRegion.cpp). Empty
     // where no box is.
     glm::ivec4 texelsNear(std::span<const std::array<glm::vec3, 8>> boxes, const glm::mat4& viewProj, float pad) const;
+    // The smallest rectangle holding both (MapRegion's unite; either may be empty).
+    static glm::ivec4 united(const glm::ivec4& a, const glm::ivec4& b);
 };
 
 // Which casters one shadow pass draws. Casters whose world bounds lie wholly outside the clip

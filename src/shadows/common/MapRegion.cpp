@@ -41,6 +41,7 @@ glm::ivec4 CasterMap::texelsNear(std::span<const std::array<glm::vec3, 8>> boxes
     return intersection(grown(near, glm::ivec2(padTexels), resolution), texels);
 }
 
+glm::ivec4 CasterMap::united(const glm::ivec4& a, const glm::ivec4& b) { return unite(a, b); }
 
 // A perspective light sees only the box's part in front of its eye: a convex solid whose corners
 // are the box's corners there and the points where the box's edges cross the eye's plane. A
