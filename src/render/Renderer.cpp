@@ -252,6 +252,22 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws) gpu_.addSurfaceBounds(d, boxes);
             return boxes;
         };
+        frame.reuseStillCasters = options_.reuseStillCasters;
+        frame.holdSunBox = options_.holdSunBox;
+        frame.translucentCasters = translucentCasters;
+        frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
+            for (const Draw& d : draws)
+                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
+                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces, cameraViewProj);  // seen from the camera, as drawSurfaces is
+                    gpu_.draw(d, programs.of(*d.material));
+                }
+            glDisable(GL_CULL_FACE);
+        };
+        frame.scene = &scene_;
+        frame.time = time;
+        frame.viewport = {width, height};
+        // The views fitted first: flatCasterNeeds asks for the reach of this frame's maps.
+        technique_->fitToView(frame);
         shadowTriangles_.assign(scene_.lights.size(), 0);
         const std::vector<FlatCasterNeed>& flatNeeds = flatCasterNeeds(draws, block);
         // The boxes a flat part is drawn near in this selection's light's maps (none: drawn whole).
@@ -320,9 +336,6 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             }
             return digest.value();
         };
-        frame.reuseStillCasters = options_.reuseStillCasters;
-        frame.holdSunBox = options_.holdSunBox;
-        frame.translucentCasters = translucentCasters;
         frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
             if (selection.lightViewProj) {
                 programs.plain->set("uLightViewProj", *selection.lightViewProj);
@@ -363,17 +376,6 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             glCullFace(GL_BACK);
             glDisable(GL_CULL_FACE);  // as the pass set it (PassState::cullFace is false in every caster pass)
         };
-        frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
-            for (const Draw& d : draws)
-                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
-                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces, cameraViewProj);  // seen from the camera, as drawSurfaces is
-                    gpu_.draw(d, programs.of(*d.material));
-                }
-            glDisable(GL_CULL_FACE);
-        };
-        frame.scene = &scene_;
-        frame.time = time;
-        frame.viewport = {width, height};
         technique_->renderMaps(frame);
         timer_.end(Pass::Shadow);
     }
@@ -957,8 +959,36 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
     digest.add(reach, depthReach, filtered, block);
     for (const scene::Light& light : scene_.lights) digest.add(light.shadow.polygonOffset);
     for (const Draw& d : draws) digest.add(d.object, d.mesh, d.part, d.model, d.translucent, d.castsShadow, d.moving);
-    if (digest.value() == flatCasterNeedsKey_ && flatCasterNeeds_.size() == draws.size()) return flatCasterNeeds_;
+    // Per light and draw, the reach of the lookups at that draw's surfaces where less: the maps read
+    // there may be finer than the frame's coarsest (cascades near the camera, warped texels near
+    // the warp's near plane), and a flat part's shadow is judged against each receiver by the reach
+    // of its own lookups (the osgShadow grid under lispsm: 59 of its 100 objects read at most 8
+    // plain texels away, against 64 over the whole view, and its ground left the map). A filtered
+    // lookup's reach (filterReachTexels) holds everywhere alike. Asked only where it may decide
+    // (flatCasterShadowsNone would pass with some reach, not with the frame's), and remembered: with the rest unchanged, the answer is kept while those
+    // same questions get the same answers (a moving camera refits the views every frame).
+    const auto reachWithin = [&](const FlatCasterReachAsked& asked) {
+        return std::max(0.0f, std::min(reach, technique_->shadowReachTexelsWithin(asked.light, draws[asked.draw].worldBounds)));
+    };
+    const std::uint64_t views = technique_->reachViewsDigest();
+    if (digest.value() == flatCasterNeedsKey_ && flatCasterNeeds_.size() == draws.size() &&
+        (views == flatCasterViews_ ||
+         std::all_of(flatCasterAsked_.begin(), flatCasterAsked_.end(), [&](const auto& a) { return reachWithin(a) == a.reach; }))) {
+        flatCasterViews_ = views;
+        return flatCasterNeeds_;
+    }
     std::vector<FlatCasterNeed> needs(draws.size());
+    std::vector<FlatCasterReachAsked> asked;
+    std::vector<float> receiverReach(static_cast<std::size_t>(block.count.x) * draws.size(), -1.0f);
+    const auto reachAt = [&](int light, std::size_t receiver) {
+        float& at = receiverReach[static_cast<std::size_t>(light) * draws.size() + receiver];
+        if (at < 0.0f) {
+            FlatCasterReachAsked question{light, receiver, 0.0f};
+            at = question.reach = reachWithin(question);
+            asked.push_back(question);
+        }
+        return at;
+    };
     std::vector<OrientedBox> boxes;  // each draw's, once: every caster and light tests them all
     boxes.reserve(draws.size());
     for (const Draw& d : draws) boxes.emplace_back(d.meshBounds, d.model);
@@ -967,7 +997,7 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
     // opaque caster over it too: under a field of objects (the osgShadow grid's 100 spheres and
     // tori) their rectangle still leaves the ground's far parts out (grid, vsm, every map redrawn:
     // blur 6.2 -> 2.4 ms, shadow pass 1.24 -> 1.08x floor-depth's by glFinish wall clocks).
-    const std::size_t mostNear = filtered ? 256 : 8;
+    const std::size_t mostNear = 256;
     for (std::size_t c = 0; c < draws.size(); ++c) {
         const Draw& d = draws[c];
         // A solid's inner faces, seen from inside, are lit through it: only flat parts qualify.
@@ -985,7 +1015,7 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
             // finds them in its blocker search, and its narrow filter does not always pass them):
             // over a ground and a floating sphere, 3 of 153,600 pixels changed without them.
             if (static_cast<int>(light.colorType.w) == gpu::kLightPoint) continue;
-            const float pad = lookupPadTexels(reach, light);
+            const float framePad = lookupPadTexels(reach, light);
             const glm::vec2 offset = scene_.lights[static_cast<std::size_t>(l)].shadow.polygonOffset;
             const float opaqueReach = offset.x >= 0.0f && offset.y >= 0.0f ? depthReach : -1.0f;
             NearCasters shadowed;
@@ -994,7 +1024,16 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
                 if (r == c) continue;
                 const OrientedBox& receiver = boxes[r];
                 // (An offset that pulls the caster's depths towards the light voids the plane's side.)
-                if (plane && opaqueReach >= 0.0f && flatCasterShadowsNone(light, *plane, receiver, pad, opaqueReach)) continue;
+                const auto shadowsNone = [&](float padTexels) {
+                    return plane && opaqueReach >= 0.0f && flatCasterShadowsNone(light, *plane, receiver, padTexels, opaqueReach);
+                };
+                if (shadowsNone(framePad)) continue;
+                // A receiver within the finest lookup's reach of the plane (one resting on a ground)
+                // is judged by the frame's reach: its own would hardly leave the part out.
+                const bool asks = !filtered && shadowsNone(lookupPadTexels(0.0f, light));
+                const float receiverReach = asks ? reachAt(l, r) : reach;
+                const float pad = receiverReach < reach ? lookupPadTexels(receiverReach, light) : framePad;
+                if (pad < framePad && shadowsNone(pad)) continue;
                 const bool shadows = !(opaqueReach >= 0.0f ? opaqueShadowFootprint(light, caster, receiver, pad, opaqueReach)
                                                            : shadowFootprint(light, caster, receiver, pad))
                                           .empty();
@@ -1017,6 +1056,8 @@ const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std
         }
     }
     flatCasterNeedsKey_ = digest.value();
+    flatCasterViews_ = views;
+    flatCasterAsked_ = std::move(asked);
     flatCasterNeeds_ = std::move(needs);
     return flatCasterNeeds_;
 }

@@ -280,6 +280,15 @@ private:
     const std::vector<FlatCasterNeed>& flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const;
     mutable std::uint64_t flatCasterNeedsKey_ = 0;  // flatCasterNeeds' last answer and what it was of
     mutable std::vector<FlatCasterNeed> flatCasterNeeds_;
+    // What it asked the technique's shadowReachTexelsWithin (a light, a receiver's draw, the answer),
+    // under views of reachViewsDigest flatCasterViews_.
+    struct FlatCasterReachAsked {
+        int light;
+        std::size_t draw;
+        float reach;
+    };
+    mutable std::vector<FlatCasterReachAsked> flatCasterAsked_;
+    mutable std::uint64_t flatCasterViews_ = 0;
     // RenderOptions::shadowOnlyWhereCast: per opaque draw and shadowed light, where shadows may fall.
     void addShadowReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                         int width, int height) const;

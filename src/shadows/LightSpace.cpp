@@ -57,17 +57,25 @@ void clippedEdges(const std::array<glm::vec3, 8>& corners, const std::array<glm:
 
 }  // namespace
 
+// Gribb & Hartmann: the clip volume's planes are w +- x, w +- y, w +- z of the matrix's rows.
+Frustum::Frustum(const glm::mat4& viewProj) : corners(frustumCorners(viewProj)) {
+    const glm::mat4 t = glm::transpose(viewProj);
+    planes = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+}
+
 std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::Bounds& box) {
+    return box.empty() ? std::vector<glm::vec3>{} : frustumInsideBox(Frustum(viewProj), box);
+}
+
+std::vector<glm::vec3> frustumInsideBox(const Frustum& frustum, const scene::Bounds& box) {
     std::vector<glm::vec3> points;
     if (box.empty()) return points;
-    // Gribb & Hartmann: the clip volume's planes are w +- x, w +- y, w +- z of the matrix's rows.
-    const glm::mat4 t = glm::transpose(viewProj);
-    const std::array<glm::vec4, 6> frustum{t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+    points.reserve(48);  // two ends of each solid's 12 edges
     const std::array<glm::vec4, 6> boxPlanes{glm::vec4(1, 0, 0, -box.min.x), glm::vec4(-1, 0, 0, box.max.x),
                                              glm::vec4(0, 1, 0, -box.min.y), glm::vec4(0, -1, 0, box.max.y),
                                              glm::vec4(0, 0, 1, -box.min.z), glm::vec4(0, 0, -1, box.max.z)};
-    clippedEdges(frustumCorners(viewProj), boxPlanes, points);
-    clippedEdges(box.corners(), frustum, points);
+    clippedEdges(frustum.corners, boxPlanes, points);
+    clippedEdges(box.corners(), frustum.planes, points);
     return points;
 }
 

@@ -75,6 +75,13 @@ std::array<glm::vec3, 8> frustumCorners(const glm::mat4& viewProj);
 // lies on an edge of one of the two (it is where three faces meet, two of them of the same
 // solid), so these points span it; none when the two do not meet.
 std::vector<glm::vec3> frustumInsideBox(const glm::mat4& viewProj, const scene::Bounds& box);
+// The same against one frustum made once (its corners take a matrix inverse): for many boxes.
+struct Frustum {
+    explicit Frustum(const glm::mat4& viewProj);
+    std::array<glm::vec3, 8> corners;
+    std::array<glm::vec4, 6> planes;
+};
+std::vector<glm::vec3> frustumInsideBox(const Frustum& frustum, const scene::Bounds& box);
 
 // The six view matrices of a cube map, in GL's face order (+X, -X, +Y, -Y, +Z, -Z).
 std::array<glm::mat4, 6> cubeFaceViews(const glm::vec3& position);

@@ -204,7 +204,13 @@ public:
     virtual std::string name() const = 0;
     // GLSL file (relative to the source root) that defines shadowVisibility().
     virtual std::filesystem::path lookupShader() const = 0;
-    // Re-renders every light's maps (called every frame).
+    // Fits view-dependent maps (cascades, warps) to this frame's camera. Called every frame before
+    // the renderer chooses which casters the maps need, which asks shadowReachTexels and
+    // shadowReachTexelsWithin: they answer for this frame's views from then on, not last frame's.
+    // The frame's caster callbacks (drawCasters, casterBounds, casterTexels, casterBoxes,
+    // casterDigest) are not set yet; drawSurfaces is.
+    virtual void fitToView(const ShadowFrame& frame) { (void)frame; }
+    // Re-renders every light's maps (called every frame, after fitToView).
     virtual void renderMaps(const ShadowFrame& frame) = 0;
     // Compile-time choices of the lookup (`NAME value` preprocessor defines), so that the
     // lighting program holds only the chosen filter's code: llvmpipe runs every branch of a
@@ -240,6 +246,9 @@ public:
         (void)region;
         return shadowReachTexels();
     }
+    // A digest of what shadowReachTexelsWithin answers by besides shadowReachTexels (the views
+    // fitToView fitted): equal digests, equal answers for every region. 0 (the default): nothing else.
+    virtual std::uint64_t reachViewsDigest() const { return 0; }
     // How much deeper than its receiver's biased depth (window depth of the light's map) the
     // lookup may compare with an opaque caster's depths: 0 where every compare takes the
     // receiver's own depth, the receiver-plane taps' clamp where they extrapolate it (0.01,

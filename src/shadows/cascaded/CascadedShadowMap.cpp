@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "gpu/ShaderContract.h"
 #include "shadows/LightSpace.h"
+#include "util/Digest.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,13 +27,11 @@ std::vector<Parameter> CascadedShadowMap::declareParameters() {
                             "draw each cascade only where its camera slice meets the scene (casters culled, texels scissored)")};
 }
 
-void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
-    // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
-    const scene::Light* sunLight = maps_.renderAllButTheSun(frame);
-    light_ = frame.slots->sun;
+void CascadedShadowMap::fitToView(const ShadowFrame& frame) {
+    light_ = frame.camera ? frame.slots->sun : -1;
     reachTexels_ = -1.0f;
-    if (!sunLight) return;
-    const scene::Light& sun = *sunLight;
+    if (light_ < 0) return;
+    const scene::Light& sun = (*frame.lights)[static_cast<std::size_t>(light_)];
     const int count = std::clamp(count_, 1, 8);
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
     const scene::Camera& cam = *frame.camera;
@@ -68,6 +67,15 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     float coarsest = plainTexel_;
     for (const Cascade& c : fitted_) coarsest = std::max(coarsest, c.texelWorld);
     reachTexels_ = reachInPlainTexels(coarsest, plainTexel_, normalOffset_);
+}
+
+void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
+    // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
+    const scene::Light* sunLight = maps_.renderAllButTheSun(frame);
+    if (!sunLight || light_ < 0) return;
+    const scene::Light& sun = *sunLight;
+    const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
+    const bool holdBoxes = frame.holdSunBox && stabilize_ && !freeze_;
     gl::DebugGroup group("cascades");
     std::vector<glm::mat4> viewProj;
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
@@ -101,6 +109,14 @@ float CascadedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds&
     return std::min(reachInPlainTexels(coarsest, plainTexel_, normalOffset_), reachTexels_);
 }
 
+std::uint64_t CascadedShadowMap::reachViewsDigest() const {
+    util::Digest digest;
+    digest.add(light_, select_, blend_, plainTexel_, normalOffset_, cameraView_);
+    for (float split : splits_) digest.add(split);
+    for (const Cascade& c : fitted_) digest.add(c.texelWorld);
+    return digest.value();
+}
+
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of
 // the scene: where the slice meets the boxes around them (ShadowFrame::surfaceBounds, a box per
 // cluster of big meshes), projected into the cascade, lies every texel a lookup reads, widened by
@@ -113,8 +129,8 @@ std::vector<TexelRect> CascadedShadowMap::readTexels(const ShadowFrame& frame, c
     const int margin = 2 + static_cast<int>(std::ceil(std::abs(sun.shadow.normalOffset)));
     for (std::size_t c = 0; c < fitted_.size(); ++c) {
         TexelRect r(0);
-        for (const scene::Bounds& surface : surfaces)
-            r = unite(r, texelRect(frustumInsideBox(readSlices_[c], surface), fitted_[c].viewProj, res));
+        const Frustum slice(readSlices_[c]);
+        for (const scene::Bounds& surface : surfaces) r = unite(r, texelRect(frustumInsideBox(slice, surface), fitted_[c].viewProj, res));
         texels.push_back(grown(r, glm::ivec2(margin), res));
     }
     return texels;

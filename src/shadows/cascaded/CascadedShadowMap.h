@@ -15,6 +15,8 @@ class CascadedShadowMap final : public ShadowTechnique {
 public:
     std::string name() const override { return "cascaded"; }
     std::filesystem::path lookupShader() const override { return "src/shadows/cascaded/lookup.glsl"; }
+    // The splits and each cascade's box fitted to the camera (or held), and the reach over them.
+    void fitToView(const ShadowFrame& frame) override;
     void renderMaps(const ShadowFrame& frame) override;
     // The coloured tint is the plain tint maps' (plainMapTint in shadow_filtering.glsl), read at the
     // receiver's texel as hard's: the default tint reach, and the default own-layers builds
@@ -25,6 +27,7 @@ public:
     // Over the cascades that pixels in `region` read (its view depths, blend bands included);
     // other lights' hard lookups: 2, as hard's.
     float shadowReachTexelsWithin(int light, const scene::Bounds& region) const override;
+    std::uint64_t reachViewsDigest() const override;
     float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // CASCADE_SELECT: how a pixel picks its cascade, compiled in (llvmpipe would otherwise test
     // the other way too, a matrix product per cascade tried).

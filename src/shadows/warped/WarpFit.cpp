@@ -52,12 +52,13 @@ WarpedView finish(WarpedView w, const glm::mat4& viewProj) {
 glm::vec3 warpBodyMargin(const scene::Bounds& sceneBounds) { return glm::vec3(1e-3f * glm::length(sceneBounds.extent())); }
 
 bool makeWarpBody(const scene::Light& sun, const glm::mat4& cameraViewProj, const WarpScene& scene, WarpBody& body) {
-    if (scene.objects.empty()) body.visible = frustumInsideBox(cameraViewProj, scene.bounds);
+    const Frustum camera(cameraViewProj);
+    if (scene.objects.empty()) body.visible = frustumInsideBox(camera, scene.bounds);
     const glm::vec3 margin = warpBodyMargin(scene.bounds);
     for (scene::Bounds box : scene.objects) {
         box.min -= margin;
         box.max += margin;
-        const auto part = frustumInsideBox(cameraViewProj, box);
+        const auto part = frustumInsideBox(camera, box);
         body.visible.insert(body.visible.end(), part.begin(), part.end());
     }
     if (body.visible.empty()) return false;
@@ -251,15 +252,19 @@ float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& 
 }
 
 float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const AcrossLight& across, int resolution) {
-    const glm::vec4 h = s * glm::vec4(P, 1.0f);
+    return WarpedTexelGauge(s, across, resolution).at(P);
+}
+
+WarpedTexelGauge::WarpedTexelGauge(const glm::mat4& s, const AcrossLight& across, int resolution)
+    : s_(s), se1_(s * glm::vec4(across.e1, 0.0f)), se2_(s * glm::vec4(across.e2, 0.0f)), resolution_(static_cast<float>(resolution)) {}
+
+float WarpedTexelGauge::at(const glm::vec3& P) const {
+    const glm::vec4 h = s_ * glm::vec4(P, 1.0f);
     const glm::vec2 uv = glm::vec2(h) / h.w;
     float gain = std::numeric_limits<float>::max();
-    for (const glm::vec3& e : {across.e1, across.e2}) {
-        // d(uv)/dP · e = (S_xy e - uv S_w e) / w
-        const glm::vec4 se = s * glm::vec4(e, 0.0f);
+    for (const glm::vec4& se : {se1_, se2_})  // d(uv)/dP · e = (S_xy e - uv S_w e) / w
         gain = std::min(gain, glm::length((glm::vec2(se) - uv * se.w) / h.w));
-    }
-    return 1.0f / (static_cast<float>(resolution) * std::max(gain, 1e-12f));
+    return 1.0f / (resolution_ * std::max(gain, 1e-12f));
 }
 
 }  // namespace penumbra::shadows

@@ -108,6 +108,18 @@ struct AcrossLight {
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
 // perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.
 float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const AcrossLight& across, int resolution);
+// The same for many points of one map: the two directions taken through the matrix once
+// (Renderer::flatCasterNeeds asks WarpedShadowMap::shadowReachTexelsWithin of each receiver).
+class WarpedTexelGauge {
+public:
+    WarpedTexelGauge(const glm::mat4& shadowMatrix, const AcrossLight& across, int resolution);
+    float at(const glm::vec3& P) const;
+
+private:
+    glm::mat4 s_;
+    glm::vec4 se1_, se2_;
+    float resolution_;
+};
 float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const glm::vec3& lightDirection, int resolution);
 
 }  // namespace penumbra::shadows

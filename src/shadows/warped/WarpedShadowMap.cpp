@@ -33,16 +33,21 @@ std::vector<Parameter> WarpedShadowMap::declareParameters() {
     return p;
 }
 
+void WarpedShadowMap::fitToView(const ShadowFrame& frame) {
+    light_ = frame.camera ? frame.slots->sun : -1;
+    reachTexels_ = -1.0f;
+    if (light_ < 0) return;
+    const glm::ivec2 grid = requestedGrid();
+    if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y)
+        fitViews(frame, (*frame.lights)[static_cast<std::size_t>(light_)], grid);
+}
+
 void WarpedShadowMap::renderMaps(const ShadowFrame& frame) {
     // Other lights, and every light's coloured tint; the sun's depth lives in the layered map.
     const scene::Light* sunLight = maps_.renderAllButTheSun(frame);
-    light_ = frame.slots->sun;
-    reachTexels_ = -1.0f;
-    if (!sunLight) return;
+    if (!sunLight || light_ < 0) return;
     const scene::Light& sun = *sunLight;
-    const glm::ivec2 grid = requestedGrid();
     const int res = (*frame.lightSpaces)[static_cast<std::size_t>(light_)].resolution;
-    if (!freeze_ || grid != grid_ || static_cast<int>(views_.size()) != grid.x * grid.y) fitViews(frame, sun, grid);
     resolution_ = res;
     gl::DebugGroup group(name_.c_str());
     std::vector<glm::mat4> viewProj;
@@ -107,10 +112,10 @@ void WarpedShadowMap::fitViews(const ShadowFrame& frame, const scene::Light& sun
             if (hold) v = followWarpedView(v, &views_[views.size()], body, sun.direction);
             // Over the body's corners; a margin for texels that grow faster than linearly between
             // them (PSM's double projection).
-            for (const glm::vec3& p : body.visible)
-                coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(v.shadowMatrix, p, across, plain.resolution));
+            const WarpedTexelGauge texel(v.shadowMatrix, across, plain.resolution);
+            for (const glm::vec3& p : body.visible) coarsest = std::max(coarsest, kReachMargin * texel.at(p));
             if (grid == glm::ivec2(1))
-                reachView_ = ReachView{tile, frame.sceneBounds, warpBodyMargin(frame.sceneBounds), sun.direction, plain.resolution};
+                reachView_ = ReachView{Frustum(tile), texel, frame.sceneBounds, warpBodyMargin(frame.sceneBounds)};
             views.push_back(v);
         }
     views_ = std::move(views);
@@ -135,12 +140,19 @@ float WarpedShadowMap::shadowReachTexelsWithin(int light, const scene::Bounds& r
     if (glm::any(glm::greaterThan(grown.min, grown.max))) return 2.0f;  // outside the scene: no receiver there
     const WarpedView& view = views_.front();
     float coarsest = plainTexel_;
-    const AcrossLight across(reachView_->lightDirection);
     for (const glm::vec3& p : frustumInsideBox(reachView_->frustum, grown)) {
         if (!((view.shadowMatrix * glm::vec4(p, 1.0f)).w > 0.0f)) return reachTexels_;
-        coarsest = std::max(coarsest, kReachMargin * warpedTexelWorld(view.shadowMatrix, p, across, reachView_->resolution));
+        coarsest = std::max(coarsest, kReachMargin * reachView_->texel.at(p));
     }
     return std::min(reachInPlainTexels(coarsest, plainTexel_, normalOffset_), reachTexels_);
+}
+
+std::uint64_t WarpedShadowMap::reachViewsDigest() const {
+    util::Digest digest;
+    digest.add(light_, plainTexel_, normalOffset_, views_.size(), reachView_.has_value());
+    for (const WarpedView& v : views_) digest.add(v.shadowMatrix);
+    if (reachView_) digest.add(reachView_->frustum.planes, reachView_->scene, reachView_->margin);
+    return digest.value();
 }
 
 glm::ivec2 WarpedShadowMap::requestedGrid() const { return {std::clamp(cols_, 1, 4), std::clamp(rows_, 1, 4)}; }

@@ -16,6 +16,8 @@ public:
     WarpedShadowMap(std::string name, Warp warp, int cols, int rows);
     std::string name() const override { return name_; }
     std::filesystem::path lookupShader() const override { return "src/shadows/warped/lookup.glsl"; }
+    // The views (one per tile) fitted to the camera, or held (fitViews), and the reach over them.
+    void fitToView(const ShadowFrame& frame) override;
     void renderMaps(const ShadowFrame& frame) override;
     // The coloured tint is the plain tint maps' (plainMapTint in shadow_filtering.glsl), read at the
     // receiver's texel as hard's: the default tint reach, and the default own-layers builds
@@ -26,6 +28,7 @@ public:
     // A single map's (no tiles): over `region`'s part of the camera's body, as shadowReachTexels
     // over the whole body; other lights' hard lookups: 2, as hard's.
     float shadowReachTexelsWithin(int light, const scene::Bounds& region) const override;
+    std::uint64_t reachViewsDigest() const override;
     float shadowReachDepth() const override { return reachTexels_ < 0.0f ? -1.0f : 0.0f; }
     // WARPED_TILES: the tile count this frame's maps will have (renderMaps fits the grid the
     // parameters ask for, frozen or not), so a single map compiles without the per-pixel tile
@@ -58,13 +61,13 @@ private:
     std::uint64_t fitInputs_ = 0;
     float reachTexels_ = -1.0f;      // shadowReachTexels
     float fittedReach_ = -1.0f;      // reachTexels_ as fitViews left it
-    // shadowReachTexelsWithin's: the single view's frustum (none with tiles), the scene's box and
-    // the body's margin (warpBodyMargin), and what warpedTexelWorld and reachInPlainTexels take.
+    // shadowReachTexelsWithin's: the single view's frustum (none with tiles), its map's texel
+    // sizes, the scene's box and the body's margin (warpBodyMargin).
     struct ReachView {
-        glm::mat4 frustum;
+        Frustum frustum;
+        WarpedTexelGauge texel;
         scene::Bounds scene;
-        glm::vec3 margin, lightDirection;
-        int resolution;
+        glm::vec3 margin;
     };
     std::optional<ReachView> reachView_;
     float plainTexel_ = 0.0f, normalOffset_ = 0.0f;
