@@ -37,6 +37,14 @@ static void configure(shadows::ShadowTechnique& technique, const RenderOptions& 
 // texels besides, and 2 for rounding.
 static float lookupPadTexels(float reach, const gpu::LightData& light) { return reach + light.shadow.z + 2.0f; }
 
+// Wholly on the outer side (dot(plane, P) < 0) of one of `planes`: its corner farthest inside is not in.
+static bool outsideAnyPlane(const scene::Bounds& box, const std::vector<glm::vec4>& planes) {
+    return std::any_of(planes.begin(), planes.end(), [&](const glm::vec4& p) {
+        const glm::vec3 farthest = glm::mix(box.min, box.max, glm::step(glm::vec3(0.0f), glm::vec3(p)));
+        return glm::dot(glm::vec3(p), farthest) + p.w < 0.0f;
+    });
+}
+
 static gl::Program fullscreenProgram(const char* fragment, std::vector<std::string> defines = {}) {
     return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment, .defines = std::move(defines)});
 }
@@ -290,7 +298,8 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
                    (selection.motion == Motion::Any || d.moving == (selection.motion == Motion::Moving)) &&
                    !(selection.light >= 0 && (flatNeeds[index].nothing >> selection.light & 1u)) &&
-                   !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull));
+                   !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull)) &&
+                   !outsideAnyPlane(d.worldBounds, selection.cullPlanes);
         };
         frame.casterBounds = [&](const shadows::CasterSelection& selection) {
             scene::Bounds all;

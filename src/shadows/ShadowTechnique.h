@@ -81,6 +81,9 @@ struct CasterSelection {
     std::optional<glm::mat4> lightViewProj;
     bool nearestDepthOnly = false;
     std::optional<CasterMap> map;
+    // World planes (dot(plane, P) >= 0 inside): a caster wholly outside any one is left out. A
+    // cascade's: the column along the light over the receivers it is read for.
+    std::vector<glm::vec4> cullPlanes;
 };
 
 // The program each caster draw uses: `plain` for materials whose texture the pass need not

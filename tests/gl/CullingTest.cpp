@@ -545,10 +545,11 @@ TEST(Culling, ClustersOfABigMeshCullPerCubeFaceAndCascadeWithTheSamePixels) {
 }
 
 // Cascades fitted to their receivers: a cascade is drawn only where its camera slice (blend band
-// included) meets the scene, casters culled and texels scissored to that. Posts stand from near
+// included) meets the scene, texels scissored to that and casters culled to the column along the
+// light over it (columnPlanes). Posts stand from near
 // the camera to far away, under a low sun that throws their shadows across the slices, toward
-// the camera and away from it. The pictures must be exactly those of whole cascades, with fewer
-// triangles drawn.
+// the camera and away from it. The pictures must be exactly those of whole cascades, with under
+// two thirds of the triangles drawn.
 TEST(Culling, CascadesFittedToTheirReceiversKeepEveryPixel) {
     struct Case {
         const char* direction;
@@ -578,7 +579,8 @@ TEST(Culling, CascadesFittedToTheirReceiversKeepEveryPixel) {
         std::size_t fitted = 0, whole = 0;
         const std::vector<float> withFit = renderWith(true, fitted), wholeLayers = renderWith(false, whole);
         EXPECT_EQ(withFit, wholeLayers) << c.direction << ": fitting the cascades to their receivers changed the picture";
-        EXPECT_LT(fitted, whole) << c.direction << ": nothing was culled";
+        // The posts' columns: 0.38-0.61 of whole layers' triangles; the slices' rectangles alone 0.58-0.95.
+        EXPECT_LE(fitted * 100, whole * 65) << c.direction << ": casters outside the column over the slice's receivers were drawn";
         const Frame f{128, 72, withFit};
         int shadowed = 0;
         for (int y = 0; y < 72; ++y)

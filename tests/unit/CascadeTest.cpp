@@ -235,5 +235,38 @@ TEST(Cascades, FrustumInsideBoxSpansTheirIntersection) {
     EXPECT_NEAR(cut.max.z, -1.0f, 1e-3f);
 }
 
+// columnPlanes bounds the column along the light over a cascade's read points by the sides of their
+// hull in the map, a margin of texels out: under a sun straight down (light x, y = world x, -z over
+// a 20 m box, 200 texels), a triangle of points on the ground. A box over the triangle, or over
+// the ground within the margin of its hypotenuse, is inside every plane at any height; one over the
+// triangle's bounding rectangle's empty corner, past the margin, lies outside one; collinear points
+// give no planes (nothing culled).
+TEST(Cascades, ColumnPlanesHoldTheHullOfTheReadPointsAlongTheLight) {
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 50.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f));
+    const glm::mat4 viewProj = glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 100.0f) * view;
+    const std::vector<glm::vec3> triangle{{-8, 0, 8}, {8, 0, 8}, {-8, 0, -8}, {0, 0, 8}};  // a point on an edge too
+    const float margin = 3.0f;  // texels of 0.1 m
+    const std::vector<glm::vec4> planes = columnPlanes(triangle, viewProj, 200, margin);
+    ASSERT_EQ(planes.size(), 3u) << "the hull's three sides";
+    const auto outside = [&](const scene::Bounds& box) {
+        for (const glm::vec4& p : planes) {
+            float farthest = -1e30f;
+            for (int k = 0; k < 8; ++k) farthest = std::max(farthest, glm::dot(glm::vec3(p), box.corner(k)) + p.w);
+            if (farthest < 0.0f) return true;
+        }
+        return false;
+    };
+    const auto at = [](glm::vec2 xz, float y0, float y1) { return scene::Bounds{glm::vec3(xz.x - 0.5f, y0, xz.y - 0.5f), glm::vec3(xz.x + 0.5f, y1, xz.y + 0.5f)}; };
+    EXPECT_FALSE(outside(at({-4, 4}, 0, 1))) << "inside the triangle";
+    EXPECT_FALSE(outside(at({-4, 4}, 20, 30))) << "high over it: the column holds the light's direction";
+    // The hypotenuse runs from (8, 8) to (-8, -8), x = z: a point (x, 0) lies x / sqrt 2 past it.
+    EXPECT_FALSE(outside(scene::Bounds{glm::vec3(0.35f, 0.0f, 0.0f), glm::vec3(0.4f, 1.0f, 0.0f)})) << "0.25 m past: within the margin";
+    EXPECT_TRUE(outside(scene::Bounds{glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(0.6f, 1.0f, 0.0f)})) << "0.35 m past the margin";
+    EXPECT_TRUE(outside(at({6, -6}, 0, 30))) << "the rectangle's empty corner";
+    EXPECT_FALSE(outside(at({8.2f, 8.2f}, 0, 1))) << "over the corner, within the margin";
+    EXPECT_TRUE(columnPlanes({{-8, 0, 8}, {0, 0, 0}, {8, 0, -8}}, viewProj, 200, margin).empty()) << "collinear";
+    EXPECT_TRUE(columnPlanes({}, viewProj, 200, margin).empty());
+}
+
 }  // namespace
 }  // namespace penumbra::shadows

@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <cmath>
+#include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace penumbra::shadows {
@@ -76,6 +77,42 @@ Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float
     c.halfSize = half;
     c.direction = dir;
     return c;
+}
+
+std::vector<glm::vec4> columnPlanes(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution, float marginTexels) {
+    std::vector<glm::vec2> p;
+    p.reserve(points.size());
+    for (const glm::vec3& w : points) p.emplace_back(viewProj * glm::vec4(w, 1.0f));
+    std::sort(p.begin(), p.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return {};
+    // Andrew's monotone chain: the hull counter-clockwise, no collinear points.
+    const auto turn = [](const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::vec2> hull(2 * p.size());
+    std::size_t k = 0;
+    for (const glm::vec2& q : p) {
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], q) <= 0.0f) --k;
+        hull[k++] = q;
+    }
+    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= 0.0f) --k;
+        hull[k++] = p[i];
+    }
+    hull.resize(k - 1);
+    if (hull.size() < 3) return {};
+    // Clip x and y are affine in P (orthographic): n . (x, y) <= n . a + margin is a world plane
+    // holding the light's direction.
+    const glm::vec4 x = glm::row(viewProj, 0), y = glm::row(viewProj, 1);
+    const float margin = 2.0f * marginTexels / static_cast<float>(resolution);
+    std::vector<glm::vec4> planes;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+        const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
+        const glm::vec2 n = glm::normalize(glm::vec2(b.y - a.y, a.x - b.x));  // outward
+        planes.push_back(glm::vec4(0.0f, 0.0f, 0.0f, glm::dot(n, a) + margin) - (n.x * x + n.y * y));
+    }
+    return planes;
 }
 
 }  // namespace penumbra::shadows

@@ -40,4 +40,13 @@ Cascade fitCascade(const scene::Light& light, const scene::Camera& camera, float
                    float splitFar, const scene::Bounds& scene, int resolution, bool stabilize,
                    const Cascade* previous = nullptr);
 
+// World planes around the column along the light through `points` (where a cascade's lookups
+// read) in its orthographic view `viewProj`: the sides of their convex hull in the map, pushed
+// out by `marginTexels` texels of a `resolution`-texel map, each parallel to the light. A caster
+// wholly outside one writes no texel within that margin of the points' (CasterSelection::cullPlanes):
+// a slice's hull in the map is a narrow trapezoid where its bounding rectangle is not (the 98k
+// grid's cascades 1 and 3: 32 and 64 objects in the rectangle, 11 and 21 in the hull). None where
+// the hull is degenerate.
+std::vector<glm::vec4> columnPlanes(const std::vector<glm::vec3>& points, const glm::mat4& viewProj, int resolution, float marginTexels);
+
 }  // namespace penumbra::shadows

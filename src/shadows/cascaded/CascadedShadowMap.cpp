@@ -81,8 +81,9 @@ void CascadedShadowMap::renderMaps(const ShadowFrame& frame) {
     for (const auto& c : fitted_) viewProj.push_back(c.viewProj);
     // Held boxes leave the slice room to move by kBoxSlack / 2 of the box each way: the layers are
     // drawn with as much room around their reads.
-    cascades_.render(frame, sun, res, viewProj, {}, readTexels(frame, sun, res),
-                     holdBoxes ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0);
+    const Reads reads = readTexels(frame, sun, res);
+    cascades_.render(frame, sun, res, viewProj, {}, reads.texels, holdBoxes ? static_cast<int>(static_cast<float>(res) * kBoxSlack * 0.5f) : 0,
+                     reads.columns);
 }
 
 // The lookup (lookup.glsl) reads cascade c at view depths from the start of cascade c - 1's
@@ -120,20 +121,24 @@ std::uint64_t CascadedShadowMap::reachViewsDigest() const {
 // A cascade is read only by pixels of its camera slice (select=depth), and pixels are surfaces of
 // the scene: where the slice meets the boxes around them (ShadowFrame::surfaceBounds, a box per
 // cluster of big meshes), projected into the cascade, lies every texel a lookup reads, widened by
-// the normal offset and the comparison's texel. The far cascades of a small scene meet nothing
-// and cost no pass.
-std::vector<TexelRect> CascadedShadowMap::readTexels(const ShadowFrame& frame, const scene::Light& sun, int res) const {
-    std::vector<TexelRect> texels;
-    if (!fitReceivers_ || select_ != 0 || readSlices_.size() != fitted_.size() || !frame.surfaceBounds) return texels;
+// the normal offset and the comparison's texel: their rectangle scissors the pass, their hull's
+// column culls its casters. The far cascades of a small scene meet nothing and cost no pass.
+CascadedShadowMap::Reads CascadedShadowMap::readTexels(const ShadowFrame& frame, const scene::Light& sun, int res) const {
+    Reads reads;
+    if (!fitReceivers_ || select_ != 0 || readSlices_.size() != fitted_.size() || !frame.surfaceBounds) return reads;
     const std::vector<scene::Bounds> surfaces = frame.surfaceBounds();
     const int margin = 2 + static_cast<int>(std::ceil(std::abs(sun.shadow.normalOffset)));
     for (std::size_t c = 0; c < fitted_.size(); ++c) {
-        TexelRect r(0);
         const Frustum slice(readSlices_[c]);
-        for (const scene::Bounds& surface : surfaces) r = unite(r, texelRect(frustumInsideBox(slice, surface), fitted_[c].viewProj, res));
-        texels.push_back(grown(r, glm::ivec2(margin), res));
+        std::vector<glm::vec3> points;
+        for (const scene::Bounds& surface : surfaces) {
+            const std::vector<glm::vec3> inside = frustumInsideBox(slice, surface);
+            points.insert(points.end(), inside.begin(), inside.end());
+        }
+        reads.texels.push_back(grown(texelRect(points, fitted_[c].viewProj, res), glm::ivec2(margin), res));
+        reads.columns.push_back(columnPlanes(points, fitted_[c].viewProj, res, static_cast<float>(margin)));
     }
-    return texels;
+    return reads;
 }
 
 void CascadedShadowMap::bindLookup(const gl::Program& lighting) const {

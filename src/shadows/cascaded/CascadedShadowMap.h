@@ -37,8 +37,13 @@ public:
     std::vector<DebugView> debugViews() const override;
     std::vector<DebugLine> debugLines() const override;
     const std::vector<Cascade>& cascades() const { return fitted_; }
-    // Per cascade: the texels a lookup can read (fit_receivers), or none given (whole layers).
-    std::vector<TexelRect> readTexels(const ShadowFrame& frame, const scene::Light& sun, int resolution) const;
+    // Per cascade (fit_receivers; none given: whole layers): the texels a lookup can read, and the
+    // column along the light over them (columnPlanes).
+    struct Reads {
+        std::vector<TexelRect> texels;
+        std::vector<std::vector<glm::vec4>> columns;
+    };
+    Reads readTexels(const ShadowFrame& frame, const scene::Light& sun, int resolution) const;
 
 protected:
     std::vector<Parameter> declareParameters() override;

@@ -21,11 +21,12 @@ struct LayeredDepthMap::LayerPass {
     bool cropped, reuse;
     int room;
     bool animated;  // the scene animates casters: layers track what their still casters drew
+    const std::vector<glm::vec4>* column;  // cull planes around what is read, or none
 
     // `scissored`: the pass draws `rect` under its scissor (else the whole layer, no scissor).
     CasterSelection selection(const TexelRect& rect, Motion motion, bool scissored = false) const {
         return {Casters::Opaque, cropped && !isEmpty(rect) ? cropTo(rect, res) * viewProj : viewProj, frame.slots->sun, motion, viewProj,
-                true, CasterMap{res, scissored ? rect : TexelRect(0, 0, res, res), scissored}};
+                true, CasterMap{res, scissored ? rect : TexelRect(0, 0, res, res), scissored}, column ? *column : std::vector<glm::vec4>{}};
     }
     std::uint64_t keyOf(const TexelRect& rect, Motion motion) const {
         return reuse ? util::Digest().add(frame.casterDigest(selection(rect, motion)), viewProj, clipPlane, light.shadow.polygonOffset, rect, motion).value()
@@ -55,7 +56,7 @@ std::vector<gl::Framebuffer> depthTargets(const gl::Texture& array, int layers, 
 
 void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light, int res,
                              const std::vector<glm::mat4>& viewProj, const std::vector<glm::vec4>& clipPlanes,
-                             const std::vector<TexelRect>& readTexels, int readRoom) {
+                             const std::vector<TexelRect>& readTexels, int readRoom, const std::vector<std::vector<glm::vec4>>& readColumns) {
     const int count = std::clamp(static_cast<int>(viewProj.size()), 1, kMaxLayers);
     if (res != resolution_ || count != layers_) {
         texture_ = gl::Texture::create2DArray(GL_DEPTH_COMPONENT32F, res, res, count);
@@ -87,7 +88,7 @@ void LayeredDepthMap::render(const ShadowFrame& frame, const scene::Light& light
         // culling it per object leaves the map unchanged.
         const bool cropped = l < readTexels.size();
         const LayerPass pass{frame, light, viewProj[l], l < clipPlanes.size() ? clipPlanes[l] : glm::vec4(0, 0, 0, 1), l, res, cropped, reuse,
-                             readRoom, animated};
+                             readRoom, animated, l < readColumns.size() ? &readColumns[l] : nullptr};
         const TexelRect read = cropped ? readTexels[l] : TexelRect(0, 0, res, res);
         // Where animated casters that reach the layer can write.
         const TexelRect moving =

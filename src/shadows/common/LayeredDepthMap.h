@@ -36,8 +36,10 @@ public:
     // Without room, a moving camera's reads leave a held layer at once; with room always, layers
     // whose boxes move every frame pay for it every frame (the default orbit at 0.125 s a frame,
     // cascaded's shadow pass 8.7-9.8 -> 11.5-11.9 ms on llvmpipe with 64 texels, boxes refitted).
+    // readColumns (optional, one per layer): CasterSelection::cullPlanes around what is read.
     void render(const ShadowFrame& frame, const scene::Light& light, int resolution, const std::vector<glm::mat4>& viewProj,
-                const std::vector<glm::vec4>& clipPlanes = {}, const std::vector<TexelRect>& readTexels = {}, int readRoom = 0);
+                const std::vector<glm::vec4>& clipPlanes = {}, const std::vector<TexelRect>& readTexels = {}, int readRoom = 0,
+                const std::vector<std::vector<glm::vec4>>& readColumns = {});
     void bind(unsigned unit) const { texture_.bind(unit); }
     bool empty() const { return texture_.id() == 0; }
     int layers() const { return layers_; }
