@@ -23,6 +23,24 @@ std::vector<float> visibilityAndTriangles(scene::Scene& s, render::RenderOptions
     return renderer.readLinear();
 }
 
+// Light 0's visibility with flat casters left out where their shadow falls on nothing (the
+// default), against every caster drawn whole (`--every-caster`).
+struct AgainstEveryCaster {
+    std::size_t differing;         // pixels apart
+    std::size_t triangles;         // drawn into light 0's maps
+    std::size_t trianglesLeftOut;  // of every caster's
+    std::size_t shadowed;          // pixels under half lit
+};
+AgainstEveryCaster againstEveryCaster(scene::Scene& s, render::RenderOptions options, int width, int height) {
+    std::size_t left = 0, every = 0;
+    const std::vector<float> leftOut = visibilityAndTriangles(s, options, width, height, left);
+    options.onlyCastersThatShadow = false;
+    const std::vector<float> all = visibilityAndTriangles(s, options, width, height, every);
+    std::size_t shadowed = 0;
+    for (std::size_t i = 0; i < leftOut.size(); i += 4) shadowed += leftOut[i] < 0.5f;
+    return {differingPixels(all, leftOut, 0.0f), left, every - left, shadowed};
+}
+
 // The camera looks straight down at the ground around the origin; a tall post stands well
 // outside its view, between the low sun and the ground it sees, so its long shadow falls into
 // the view. Culled by the camera it would vanish; culled by the light it stays.
@@ -93,21 +111,16 @@ TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
             scene::Scene s = sceneWith(c.objects);
             render::RenderOptions options;
             options.technique = technique;
-            std::size_t left = 0, every = 0;
-            const std::vector<float> leftOut = visibilityAndTriangles(s, options, 96, 64, left);
-            options.onlyCastersThatShadow = false;
-            const std::vector<float> all = visibilityAndTriangles(s, options, 96, 64, every);
+            const AgainstEveryCaster r = againstEveryCaster(s, options, 96, 64);
             // A cascaded map leaves the ground out of each cascade it would have reached.
             if (std::string(technique) == "cascaded" && c.leftOut > 0) {
-                EXPECT_GE(every - left, c.leftOut) << technique << ", " << c.what;
-                EXPECT_EQ((every - left) % c.leftOut, 0u) << technique << ", " << c.what;
+                EXPECT_GE(r.trianglesLeftOut, c.leftOut) << technique << ", " << c.what;
+                EXPECT_EQ(r.trianglesLeftOut % c.leftOut, 0u) << technique << ", " << c.what;
             } else {
-                EXPECT_EQ(every - left, c.leftOut) << technique << ", " << c.what;
+                EXPECT_EQ(r.trianglesLeftOut, c.leftOut) << technique << ", " << c.what;
             }
-            EXPECT_EQ(differingPixels(all, leftOut, 0.0f), 0u) << technique << ", " << c.what;
-            std::size_t shadowed = 0;
-            for (std::size_t i = 0; i < leftOut.size(); i += 4) shadowed += leftOut[i] < 0.5f;
-            EXPECT_GT(shadowed, 100u) << technique << ", " << c.what << ": shadows in view";
+            EXPECT_EQ(r.differing, 0u) << technique << ", " << c.what;
+            EXPECT_GT(r.shadowed, 100u) << technique << ", " << c.what << ": shadows in view";
         }
 }
 
@@ -126,15 +139,10 @@ TEST(Culling, AGroundIsJudgedByTheReachOfTheMapsReadAtEachReceiver) {
     for (const char* technique : {"lispsm", "cascaded"}) {
         render::RenderOptions options;
         options.technique = technique;
-        std::size_t left = 0, every = 0;
-        const std::vector<float> leftOut = visibilityAndTriangles(s, options, 96, 64, left);
-        options.onlyCastersThatShadow = false;
-        const std::vector<float> all = visibilityAndTriangles(s, options, 96, 64, every);
-        EXPECT_GE(every - left, 2u) << technique << ": the ground left out";
-        EXPECT_EQ(differingPixels(all, leftOut, 0.0f), 0u) << technique;
-        std::size_t shadowed = 0;
-        for (std::size_t i = 0; i < leftOut.size(); i += 4) shadowed += leftOut[i] < 0.5f;
-        EXPECT_GT(shadowed, 40u) << technique << ": shadows in view";
+        const AgainstEveryCaster r = againstEveryCaster(s, options, 96, 64);
+        EXPECT_GE(r.trianglesLeftOut, 2u) << technique << ": the ground left out";
+        EXPECT_EQ(r.differing, 0u) << technique;
+        EXPECT_GT(r.shadowed, 40u) << technique << ": shadows in view";
     }
 }
 
@@ -454,11 +462,9 @@ TEST(Culling, ViewDependentMapsDrawTheSunsCastersOncePerLayer) {
           "objects": [ )" + opaque + (withPane ? pane : "") + " ] }");
         render::RenderOptions options;
         options.technique = technique;
-        std::size_t triangles = 0, every = 0;
-        const std::vector<float> picture = visibilityAndTriangles(s, options, 64, 64, triangles);
-        options.onlyCastersThatShadow = false;
-        EXPECT_EQ(differingPixels(visibilityAndTriangles(s, options, 64, 64, every), picture, 0.0f), 0u) << technique << ", pane " << withPane;
-        return triangles;
+        const AgainstEveryCaster r = againstEveryCaster(s, options, 64, 64);
+        EXPECT_EQ(r.differing, 0u) << technique << ", pane " << withPane;
+        return r.triangles;
     };
     const std::size_t groundTriangles = 2, opaqueTriangles = groundTriangles + 12, paneTriangles = 2;
     for (const char* technique : {"lispsm", "psm"}) {
