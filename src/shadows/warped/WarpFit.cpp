@@ -82,9 +82,9 @@ bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const War
     }
     // The resolution cancels out of the ratio.
     const AcrossLight across(lightDirection);
+    const WarpedTexelGauge heldTexel(held.shadowMatrix, across, 1), fittedTexel(fitted.shadowMatrix, across, 1);
     for (const glm::vec3& p : body.visible)
-        if (warpedTexelWorld(held.shadowMatrix, p, across, 1) > coarser * warpedTexelWorld(fitted.shadowMatrix, p, across, 1))
-            return false;
+        if (heldTexel.at(p) > coarser * fittedTexel.at(p)) return false;
     return true;
 }
 
@@ -248,11 +248,7 @@ AcrossLight::AcrossLight(const glm::vec3& lightDirection) {
 }
 
 float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const glm::vec3& lightDirection, int resolution) {
-    return warpedTexelWorld(s, P, AcrossLight(lightDirection), resolution);
-}
-
-float warpedTexelWorld(const glm::mat4& s, const glm::vec3& P, const AcrossLight& across, int resolution) {
-    return WarpedTexelGauge(s, across, resolution).at(P);
+    return WarpedTexelGauge(s, AcrossLight(lightDirection), resolution).at(P);
 }
 
 WarpedTexelGauge::WarpedTexelGauge(const glm::mat4& s, const AcrossLight& across, int resolution)

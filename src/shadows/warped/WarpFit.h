@@ -97,19 +97,19 @@ bool warpedViewHolds(const WarpedView& held, const WarpedView& fitted, const War
 // single frame is as it was.
 WarpedView followWarpedView(const WarpedView& fitted, const WarpedView* last, const WarpBody& body, const glm::vec3& lightDirection);
 
-// Two unit directions across a light, perpendicular to it and to each other: where
-// warpedTexelWorld measures a texel. Made once for a loop over many points: the fits measure
-// every corner of the camera's body (the 98k grid's 2,420; psm's fit 1.30 -> 1.07 ms a frame).
+// Two unit directions across a light, perpendicular to it and to each other: where a texel is
+// measured (WarpedTexelGauge).
 struct AcrossLight {
     explicit AcrossLight(const glm::vec3& lightDirection);
     glm::vec3 e1, e2;
 };
 
 // The world size of one shadow-map texel at P, measured across the light (the coarser of two
-// perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map.
-float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const AcrossLight& across, int resolution);
-// The same for many points of one map: the two directions taken through the matrix once
-// (Renderer::flatCasterNeeds asks WarpedShadowMap::shadowReachTexelsWithin of each receiver).
+// perpendicular directions): 1 / (resolution * |d uv / d P|) through the projective map. Made
+// once for a loop over many points of one map, the two directions taken through the matrix once:
+// the fits measure every corner of the camera's body (the 98k grid's 2,420; psm's fit 1.30 ->
+// 1.07 ms a frame), Renderer::flatCasterNeeds asks WarpedShadowMap::shadowReachTexelsWithin of
+// each receiver.
 class WarpedTexelGauge {
 public:
     WarpedTexelGauge(const glm::mat4& shadowMatrix, const AcrossLight& across, int resolution);
@@ -120,6 +120,7 @@ private:
     glm::vec4 se1_, se2_;
     float resolution_;
 };
+// The same at one point.
 float warpedTexelWorld(const glm::mat4& shadowMatrix, const glm::vec3& P, const glm::vec3& lightDirection, int resolution);
 
 }  // namespace penumbra::shadows
