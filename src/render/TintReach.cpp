@@ -440,7 +440,12 @@ bool flatCasterShadowsNone(const gpu::LightData& light, const glm::vec4& plane, 
     if (std::abs(facing) < 1e-3f) return false;  // edge-on to the light: neither side is clearly lit
     if (facing < 0.0f) n = -n, offset = -offset;
     const float range = light.directionFar.w - light.positionNear.w;
-    const float margin = 2.0f * padTexels * light.shadow.w + std::max(depthReach, 0.0f) * range + range / 4096.0f;
+    // The normal offset and the taps' reach across the light share the pad; a tap a across the
+    // light, along x or y of the map (so up to sqrt(2) a in all), stands for a point up to
+    // sqrt(2) a sin t nearer the plane.
+    const float sinT = std::sqrt(std::max(0.0f, 1.0f - facing * facing));
+    const float margin = padTexels * light.shadow.w * std::max(1.0f, std::sqrt(2.0f) * sinT) + std::max(depthReach, 0.0f) * range +
+                         range / 4096.0f;
     return std::all_of(receiver.corners.begin(), receiver.corners.end(),
                        [&](const glm::vec3& c) { return glm::dot(n, c) + offset > margin; });
 }

@@ -82,9 +82,11 @@ scene::Bounds opaqueShadowFootprint(const gpu::LightData& light, const OrientedB
 // Whether a flat opaque caster in `plane` (world; unit normal, offset) leaves every point of
 // `receiver` lit under a directional light: the receiver lies on the light's side of the plane by
 // more than a lookup reaches. A point h above the plane (along its normal) sees the plane, s to its
-// side across the light, at least (h - s sin t) / cos t deeper (t: the light's angle to the normal);
-// h over twice the pad (the normal offset may move the lookup towards the plane) plus the depth reach
-// and the surface tolerance keeps every compare on the lit side.
+// side across the light, at least (h - s sin t) / cos t deeper (t: the light's angle to the normal).
+// The pad (world: pad texels of the light's plain map) holds the normal offset o, which may move
+// the lookup towards the plane, and the taps' reach a across the light, along each axis of the map
+// (s up to sqrt(2) a): h over o + sqrt(2) a sin t <= pad max(1, sqrt(2) sin t), plus the depth
+// reach and the surface tolerance, keeps every compare on the lit side.
 // Under a spot, projector or point light (its eye on one side of the plane), the receiver on the
 // eye's side: a tap's ray passes a point at most s = 2 pad texels (z texelScale wide at view depth
 // z) beside a receiver point, so at least h - s above the plane, and meets the plane no nearer than

@@ -124,6 +124,34 @@ TEST(Culling, AFlatCasterWhoseShadowFallsOnNothingIsLeftOut) {
         }
 }
 
+// A ground's margin under a sun shrinks with the sun's angle to it: a lookup's taps across the
+// light stand for points nearer the ground by their reach times sin t (flatCasterShadowsNone), so
+// under a high sun (t 27 degrees here) casters floating 0.3 m over the ground leave it out of the
+// map, where twice the lookup's whole pad (the margin before) kept it. pcss reaches less near the
+// light's near plane (its penumbra is narrower there: shadowReachTexelsWithin) than its 48-texel
+// cap. The wider kernels and coarser maps keep the ground, with the same pixels.
+TEST(Culling, CastersFloatingLowUnderAHighSunLeaveTheGroundOut) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [6, 9, 10], "target": [0, 1.5, 0], "fov_deg": 45 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 1024 } } ],
+      "objects": [ { "shape": "plane", "size": [20, 20] },
+                   { "shape": "sphere", "radius": 0.5, "position": [-1, 0.8, 0] },
+                   { "shape": "box", "position": [1.2, 0.8, 0.5], "rotation_deg": [0, 30, 0] } ] })");
+    struct Case {
+        const char* technique;
+        std::size_t leftOut;  // triangles
+    };
+    for (const Case& c : {Case{"hard", 2}, Case{"pcss", 2}, Case{"cssm2", 2}, Case{"distance", 2}, Case{"psm", 2},
+                          Case{"pcf-poisson16", 0}, Case{"lispsm", 0}}) {
+        render::RenderOptions options;
+        options.technique = c.technique;
+        const AgainstEveryCaster r = againstEveryCaster(s, options, 96, 64);
+        EXPECT_EQ(r.trianglesLeftOut, c.leftOut) << c.technique;
+        EXPECT_EQ(r.differing, 0u) << c.technique;
+        EXPECT_GT(r.shadowed, 100u) << c.technique << ": shadows in view";
+    }
+}
+
 // View-dependent maps are finer near the camera than far away: a ground is judged against each
 // receiver by the reach of the lookups at that receiver's surfaces (shadowReachTexelsWithin), not
 // by the coarsest texel the view has. A long ground runs from under the camera to the horizon;

@@ -298,6 +298,52 @@ TEST(TintReach, AFlatCasterUnderASpotOrPointLightShadowsNothingClearlyAboveIt) {
     EXPECT_GT(lit, 40) << "boxes clearly above the ground";
 }
 
+// Under a sun at an angle t to a ground's normal, a lookup's pad holds its normal offset o (any
+// direction) and its taps' reach a across the light along each axis of the map (o + a <= pad): a
+// tap stands for a point up to o + sqrt(2) a sin t nearer the ground. Randomly: wherever the ground
+// is said to shadow nothing of a box, every such tap's ray meets the ground deeper than the box
+// point's own depth plus the depth reach; and a box a little over pad max(1, sqrt(2) sin t) texels
+// above the ground is said to be lit (twice the pad, the margin before, kept a high sun's ground).
+TEST(TintReach, AFlatCasterUnderASunShadowsNothingAboveItByTheTapsReachTimesSinT) {
+    const glm::vec4 ground(0, 1, 0, 0);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int lit = 0, near = 0;
+    for (int i = 0; i < 400; ++i) {
+        const float t = glm::radians(5.0f + 75.0f * u(rng)), azimuth = 6.2832f * u(rng);
+        const glm::vec3 d(std::sin(t) * std::cos(azimuth), -std::cos(t), std::sin(t) * std::sin(azimuth));
+        const float texel = 0.01f + 0.03f * u(rng), pad = 3.0f + 57.0f * u(rng), reach = u(rng) < 0.5f ? 0.0f : 2e-4f;
+        const gpu::LightData sun = directional(d, texel);
+        const float range = sun.directionFar.w - sun.positionNear.w;
+        const float margin = pad * texel * std::max(1.0f, std::sqrt(2.0f) * std::sin(t)) + reach * range + range / 4096.0f;
+        // Just over the margin: lit; anywhere from the ground up to three margins: lit where it says so.
+        const bool justOver = i % 4 == 0;
+        const glm::vec3 lo(u(rng) * 4 - 2, justOver ? 1.01f * margin : u(rng) * 3.0f * margin, u(rng) * 4 - 2);
+        const scene::Bounds b = box(lo, lo + glm::vec3(0.2f + u(rng), 0.2f + u(rng), 0.2f + u(rng)));
+        const bool none = flatCasterShadowsNone(sun, ground, OrientedBox(b), pad, reach);
+        if (justOver) {
+            EXPECT_TRUE(none) << "box " << i << ": " << margin << " over the ground, t " << glm::degrees(t);
+            ++near;
+        }
+        if (!none) continue;
+        ++lit;
+        const glm::vec3 x = glm::normalize(glm::cross(d, glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)));
+        const glm::vec3 y = glm::cross(d, x);  // the map's axes: any turn about the light
+        for (int k = 0; k < 50; ++k) {
+            const glm::vec3 p = glm::mix(b.min, b.max, glm::vec3(u(rng), u(rng), u(rng)));
+            const float o = pad * u(rng), a = pad - o;
+            const glm::vec3 offset = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)) * (o * texel);
+            const glm::vec3 q = p + offset + (x * (2.0f * u(rng) - 1.0f) + y * (2.0f * u(rng) - 1.0f)) * (a * texel);
+            ASSERT_GT(q.y, 0.0f) << "box " << i << ", point " << k;
+            // The tap's ray meets the ground q.y / cos t further along the light than the lookup's
+            // point (p + offset, at q's depth), which must lie deeper than the compare reaches.
+            EXPECT_GT(q.y / std::cos(t), reach * range) << "box " << i << ", point " << k;
+        }
+    }
+    EXPECT_GT(near, 80);
+    EXPECT_GT(lit, 150) << "boxes clearly above the ground";
+}
+
 // No padding or bias: each receiver point with a layer of the caster at or behind it on its ray
 // from the light (the ray beyond it meets the caster) is in the not-behind box; there a lookup
 // may find a layer behind the receiver.

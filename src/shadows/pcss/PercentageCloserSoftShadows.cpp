@@ -1,5 +1,10 @@
 #include "shadows/pcss/PercentageCloserSoftShadows.h"
 
+#include "util/Digest.h"
+
+#include <algorithm>
+#include <cmath>
+
 namespace penumbra::shadows {
 
 std::vector<Parameter> PercentageCloserSoftShadows::declareParameters() {
@@ -21,6 +26,72 @@ void PercentageCloserSoftShadows::bindLookup(const gl::Program& lighting) const 
     lighting.set("uLightSizeDefault", lightSize_);
     lighting.set("uSunAngleDefault", sunAngle_);
     lighting.set("uMaxRadiusTexels", maxRadius_);
+}
+
+}  // namespace penumbra::shadows
+
+namespace penumbra::shadows {
+
+void PercentageCloserSoftShadows::fitToView(const ShadowFrame& frame) {
+    lightReach_.clear();
+    if (!frame.lights || !frame.lightSpaces) return;
+    for (std::size_t i = 0; i < frame.lights->size() && i < frame.lightSpaces->size(); ++i) {
+        const scene::Light& light = (*frame.lights)[i];
+        const LightSpace& space = (*frame.lightSpaces)[i];
+        LightReach r;
+        r.bounded = space.faceCount == 1 && space.texelScale > 0.0f && space.far > space.near;
+        r.perspective = space.perspective;
+        r.shadowMatrix = space.shadowMatrix;
+        r.near = space.near;
+        r.far = space.far;
+        r.texelScale = space.texelScale;
+        r.normalOffset = std::max(light.shadow.normalOffset, 0.0f);
+        const bool sun = light.type == scene::Light::Type::Directional;
+        r.size = light.size > 0.0f ? light.size : (sun ? sunAngle_ : lightSize_);  // lookup.glsl's lightSize
+        lightReach_.push_back(r);
+    }
+}
+
+// The filter's radius is half the penumbra that the blockers' mean depth b makes at the receiver's
+// depth r, and the search's half that of a blocker at the near plane's side (lookup.glsl); every
+// blocker lies at or behind the near plane n. A sun's penumbra, (r - b) 2 tan(angle / 2) texels
+// over the texel's size, is widest with b = n; a spot's, size (r - b) / (b r) over the texel scale,
+// too. r is at most the deepest corner's depth, a normal offset further.
+float PercentageCloserSoftShadows::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
+    const float whole = shadowReachTexels();
+    if (light < 0 || static_cast<std::size_t>(light) >= lightReach_.size() || region.empty()) return whole;
+    const LightReach& l = lightReach_[static_cast<std::size_t>(light)];
+    if (!l.bounded) return whole;
+    float deepest = l.near;  // view depth along the light's axis
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 s = l.shadowMatrix * glm::vec4(region.corner(i), 1.0f);
+        if (!l.perspective) {
+            deepest = std::max(deepest, l.near + s.z * (l.far - l.near));
+            continue;
+        }
+        if (!(s.w > 0.0f)) return whole;  // behind the light: its depth bounds nothing
+        const float window = std::min(s.z / s.w, 1.0f);  // view depth from the window depth of a GL perspective
+        deepest = std::max(deepest, l.far * l.near / (l.far - window * (l.far - l.near)));
+    }
+    float penumbra = 0.0f;
+    if (!l.perspective) {
+        deepest += l.normalOffset * l.texelScale;
+        penumbra = (deepest - l.near) * 2.0f * std::tan(glm::radians(l.size) * 0.5f) / l.texelScale;
+    } else {
+        deepest *= 1.0f + l.normalOffset * l.texelScale;
+        penumbra = l.size * (deepest - l.near) / (l.near * l.texelScale * deepest);
+    }
+    // Whole texels, so that the renderer's memo of footprints keeps its keys while a sun's box moves a little.
+    const float radius = std::clamp(std::ceil(0.5f * penumbra), 1.0f, maxRadius_);
+    return std::min(radiusReachTexels(radius), whole);
+}
+
+std::uint64_t PercentageCloserSoftShadows::reachViewsDigest() const {
+    util::Digest digest;
+    digest.add(maxRadius_, lightReach_.size());
+    for (const LightReach& l : lightReach_)
+        digest.add(l.bounded, l.perspective, l.shadowMatrix, l.near, l.far, l.texelScale, l.normalOffset, l.size);
+    return digest.value();
 }
 
 }  // namespace penumbra::shadows
