@@ -150,6 +150,27 @@ TEST(Culling, CastersFloatingLowUnderAHighSunLeaveTheGroundOut) {
         EXPECT_EQ(r.differing, 0u) << c.technique;
         EXPECT_GT(r.shadowed, 100u) << c.technique << ": shadows in view";
     }
+    // A wider sun widens pcss's penumbrae, and so its reach near the ground: the same renderer
+    // draws the ground again once the parameter changes (its answer is not kept past the change).
+    render::RenderOptions options;
+    options.technique = "pcss";
+    options.output = OutputMode::Visibility;
+    render::Renderer live(s, options);
+    render::OffscreenTarget target(96, 64);
+    live.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    const std::size_t narrow = live.shadowTriangles().at(0);
+    shadows::applyParameters(live.technique().parameters(), {{"sun_angle_deg", "20"}});
+    live.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    options.onlyCastersThatShadow = false;
+    render::Renderer every(s, options);
+    shadows::applyParameters(every.technique().parameters(), {{"sun_angle_deg", "20"}});
+    every.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    EXPECT_EQ(live.shadowTriangles().at(0), narrow + 2) << "a 20-degree sun: the ground drawn";
+    EXPECT_EQ(live.shadowTriangles().at(0), every.shadowTriangles().at(0));
+    live.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    const std::vector<float> wide = live.readLinear();
+    every.render(0.0f, s.camera, 96, 64, target.framebuffer());
+    EXPECT_EQ(differingPixels(every.readLinear(), wide, 0.0f), 0u);
 }
 
 // View-dependent maps are finer near the camera than far away: a ground is judged against each
