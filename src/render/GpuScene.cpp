@@ -134,16 +134,26 @@ void GpuScene::drawPrepared(const Draw& d) const {
     drawRange(part.firstIndex, static_cast<GLsizei>(part.indexCount));
 }
 
-std::size_t GpuScene::drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const {
+std::optional<std::vector<IndexRange>> GpuScene::rangesInside(const Draw& d, const glm::mat4& viewProj,
+                                                               std::span<const glm::vec4> planes) const {
     const std::vector<MeshCluster>& clusters = meshes_[d.mesh].clusters[d.part];
-    if (clusters.empty()) {
+    if (clusters.empty()) return std::nullopt;
+    std::vector<glm::vec4> meshPlanes;  // dot(p, M x) = dot(transpose(M) p, x)
+    meshPlanes.reserve(planes.size());
+    for (const glm::vec4& p : planes) meshPlanes.push_back(glm::transpose(d.model) * p);
+    return visibleRanges(clusters, viewProj * d.model, meshPlanes);
+}
+
+std::size_t GpuScene::drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj,
+                                 std::span<const glm::vec4> planes) const {
+    const std::optional<std::vector<IndexRange>> ranges = rangesInside(d, viewProj, planes);
+    if (!ranges) {
         draw(d, program);
         return d.triangles;
     }
     std::size_t triangles = 0;
-    const std::vector<IndexRange> ranges = visibleRanges(clusters, viewProj * d.model);
-    if (!ranges.empty()) prepare(d, program);
-    for (const IndexRange& r : ranges) {
+    if (!ranges->empty()) prepare(d, program);
+    for (const IndexRange& r : *ranges) {
         drawRange(r.firstIndex, static_cast<GLsizei>(r.indexCount));
         triangles += r.indexCount / 3;
     }

@@ -63,8 +63,12 @@ public:
     // binds the texture, issues the draw.
     void draw(const Draw& d, const gl::Program& program) const;
     // The same, skipping the part's clusters (MeshClusters.h) outside the clip volume of
-    // `viewProj`; returns the triangles drawn.
-    std::size_t drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj) const;
+    // `viewProj` or wholly outside one of `planes` (world; CasterSelection::cullPlanes); returns
+    // the triangles drawn.
+    std::size_t drawInside(const Draw& d, const gl::Program& program, const glm::mat4& viewProj,
+                           std::span<const glm::vec4> planes = {}) const;
+    // The index ranges drawInside draws, or none for a part it draws whole (not cut into clusters).
+    std::optional<std::vector<IndexRange>> rangesInside(const Draw& d, const glm::mat4& viewProj, std::span<const glm::vec4> planes) const;
     // draw() in two steps, for a part drawn several times with one program (Renderer::drawPieces,
     // scissored): prepare() sets and binds what draw() does, once; drawPrepared() issues the part's
     // draw with whatever was prepared last.

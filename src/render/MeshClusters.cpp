@@ -111,10 +111,18 @@ bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds) {
     return front && behind;
 }
 
-std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh) {
+bool outsideAnyPlane(const scene::Bounds& box, std::span<const glm::vec4> planes) {
+    return std::any_of(planes.begin(), planes.end(), [&](const glm::vec4& p) {
+        const glm::vec3 farthest = glm::mix(box.min, box.max, glm::step(glm::vec3(0.0f), glm::vec3(p)));  // its corner farthest inside
+        return glm::dot(glm::vec3(p), farthest) + p.w < 0.0f;
+    });
+}
+
+std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh,
+                                      std::span<const glm::vec4> meshPlanes) {
     std::vector<IndexRange> ranges;
     for (const MeshCluster& c : clusters) {
-        if (outsideClipVolume(c.bounds, clipFromMesh)) continue;
+        if (outsideClipVolume(c.bounds, clipFromMesh) || outsideAnyPlane(c.bounds, meshPlanes)) continue;
         if (!ranges.empty() && ranges.back().firstIndex + ranges.back().indexCount == c.firstIndex)
             ranges.back().indexCount += c.indexCount;
         else

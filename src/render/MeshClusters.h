@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace penumbra::render {
@@ -40,16 +41,21 @@ ClusteredIndices clusterMesh(const scene::Mesh& mesh);
 
 // True when the box, taken through `clipFromBox`, lies wholly outside one plane of the clip volume.
 bool outsideClipVolume(const scene::Bounds& box, const glm::mat4& clipFromBox);
+// True when the box lies wholly on the outer side (dot(plane, P) < 0) of one of `planes`, in the
+// box's own space (a world plane p is transpose(model) p in a mesh's).
+bool outsideAnyPlane(const scene::Bounds& box, std::span<const glm::vec4> planes);
 
 // Whether the near plane of a pass drawn through `viewProj` (world to clip) may cut `bounds`:
 // some corner lies in front of it (z + w >= 0 in clip space) and some behind it or behind the eye.
 bool nearPlaneMayCut(const glm::mat4& viewProj, const scene::Bounds& bounds);
 
-// The index ranges of the clusters inside the clip volume, neighbours merged into one range.
+// The index ranges of the clusters inside the clip volume and on the inner side of every plane of
+// `meshPlanes` (mesh space), neighbours merged into one range.
 struct IndexRange {
     std::uint32_t firstIndex;
     std::uint32_t indexCount;
 };
-std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh);
+std::vector<IndexRange> visibleRanges(const std::vector<MeshCluster>& clusters, const glm::mat4& clipFromMesh,
+                                      std::span<const glm::vec4> meshPlanes = {});
 
 }  // namespace penumbra::render

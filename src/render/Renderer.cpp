@@ -37,14 +37,6 @@ static void configure(shadows::ShadowTechnique& technique, const RenderOptions& 
 // texels besides, and 2 for rounding.
 static float lookupPadTexels(float reach, const gpu::LightData& light) { return reach + light.shadow.z + 2.0f; }
 
-// Wholly on the outer side (dot(plane, P) < 0) of one of `planes`: its corner farthest inside is not in.
-static bool outsideAnyPlane(const scene::Bounds& box, const std::vector<glm::vec4>& planes) {
-    return std::any_of(planes.begin(), planes.end(), [&](const glm::vec4& p) {
-        const glm::vec3 farthest = glm::mix(box.min, box.max, glm::step(glm::vec3(0.0f), glm::vec3(p)));
-        return glm::dot(glm::vec3(p), farthest) + p.w < 0.0f;
-    });
-}
-
 static gl::Program fullscreenProgram(const char* fragment, std::vector<std::string> defines = {}) {
     return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment, .defines = std::move(defines)});
 }
@@ -338,6 +330,10 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
             for (const Draw& d : draws) {
                 if (!selected(d, selection)) continue;
                 digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
+                // A big part's clusters drawn: its column planes may move while the rest holds.
+                if (selection.cull && !selection.cullPlanes.empty())
+                    if (const auto ranges = gpu_.rangesInside(d, *selection.cull, selection.cullPlanes))
+                        for (const IndexRange& r : *ranges) digest.add(r.firstIndex, r.indexCount);
                 // A flat part drawn only near still casters holds what they were when it was drawn.
                 const auto& near = flatNeeds[static_cast<std::size_t>(&d - draws.data())].near;
                 if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < near.size())
@@ -358,7 +354,7 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
                 if (!selected(d, selection)) continue;
                 cullBackFacesOfSolid(d, away != GL_NONE, through);
                 const auto draw = [&] {
-                    return selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull)
+                    return selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull, selection.cullPlanes)
                                           : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
                 };
                 // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds):

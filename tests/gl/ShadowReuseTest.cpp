@@ -7,6 +7,7 @@
 
 #include "gl/Debug.h"
 #include "render/Offscreen.h"
+#include "scene/Shapes.h"
 
 #include <cmath>
 
@@ -109,6 +110,34 @@ void expectSameFrame(Pair& pair, const scene::Scene& s, float time, const std::s
     if (!maps) return;
     expectSameMaps(pair.reusing, pair.redrawing, what + ", t = " + std::to_string(time));
     expectTileBoundsMadeWhole(pair, s, time, what + ", t = " + std::to_string(time));
+}
+
+// A cascade draws a big mesh's clusters only within the column along the light over what its
+// slice reads (CasterSelection::cullPlanes), and a kept layer's key holds the clusters it drew:
+// it is drawn again when they change. While the camera turns a little, some layers are kept and
+// the columns move; the pictures stay those of layers redrawn every frame.
+TEST(KeptCascades, ABigMeshsClustersFollowTheColumnsWhileTheCameraTurns) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [5, 2, 5], "target": [0, 2, 0], "near": 0.1, "far": 60 },
+      "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [60, 60] }, { "shape": "sphere", "position": [0, 4, 0] } ] })");
+    scene::Mesh& ball = s.meshes[static_cast<std::size_t>(s.objects[1].mesh)];
+    const int material = ball.parts[0].material;
+    ball = scene::shapes::sphere(4.0f, 256, 128);
+    ball.parts[0].material = material;
+    ASSERT_GE(ball.triangleCount(), render::kClusteredPartTriangles);
+    Pair pair(s, "cascaded");
+    std::size_t kept = 0, redrawn = 0;
+    const glm::vec3 from(0.0f, 2.0f, 0.0f), to(2.0f, 2.0f, -1.0f);
+    const int frames = 10;
+    for (int frame = 0; frame < frames; ++frame) {
+        s.camera.target = glm::mix(from, to, static_cast<float>(frame) / static_cast<float>(frames));
+        expectSameFrame(pair, s, 0.0f, "frame " + std::to_string(frame), false);
+        kept += pair.reusing.shadowTriangles().at(0);
+        redrawn += pair.redrawing.shadowTriangles().at(0);
+    }
+    EXPECT_LT(kept, redrawn) << "some layers kept";
+    EXPECT_LT(redrawn, frames * 4 * ball.triangleCount()) << "clusters culled";
 }
 
 class ShadowReuse : public ::testing::TestWithParam<const char*> {};

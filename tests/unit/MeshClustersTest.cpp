@@ -112,6 +112,36 @@ TEST(MeshClusters, CullingKeepsEveryTriangleThatReachesTheVolume) {
     EXPECT_GT(reaching, 0);
 }
 
+// Planes cut clusters too (a cascade's column along the light): every triangle with a corner on
+// the inner side of both planes lies in a kept range, and the clusters wholly beyond one are out.
+TEST(MeshClusters, CullingByPlanesKeepsEveryTriangleOnTheirInnerSide) {
+    const scene::Mesh mesh = bigSphere();
+    const ClusteredIndices c = clusterMesh(mesh);
+    const glm::mat4 everything = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, -5.0f, 5.0f);
+    // A slab 0.4 wide, tilted: 0.3 <= (x + y) / sqrt(2) <= 0.7.
+    const float r = 1.0f / std::sqrt(2.0f);
+    const std::vector<glm::vec4> planes{{r, r, 0.0f, -0.3f}, {-r, -r, 0.0f, 0.7f}};
+    const std::vector<IndexRange> ranges = visibleRanges(c.clusters[0], everything, planes);
+    std::vector<bool> kept(c.indices.size() / 3, false);
+    std::uint32_t keptTriangles = 0;
+    for (const IndexRange& range : ranges) {
+        for (std::uint32_t t = range.firstIndex / 3; t < (range.firstIndex + range.indexCount) / 3; ++t) kept[t] = true;
+        keptTriangles += range.indexCount / 3;
+    }
+    EXPECT_LT(keptTriangles, mesh.triangleCount() * 3 / 4) << "clusters beyond the slab left out";
+    int reaching = 0;
+    for (std::size_t t = 0; t < kept.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 p = mesh.vertices[c.indices[3 * t + static_cast<std::size_t>(k)]].position;
+            if (std::all_of(planes.begin(), planes.end(), [&](const glm::vec4& q) { return glm::dot(glm::vec3(q), p) + q.w >= 0.0f; })) {
+                ++reaching;
+                EXPECT_TRUE(kept[t]) << "triangle " << t << " reaches the slab but was culled";
+            }
+        }
+    EXPECT_GT(reaching, 0);
+    EXPECT_EQ(visibleRanges(c.clusters[0], everything).size(), 1u) << "without planes: every cluster, one range";
+}
+
 TEST(MeshClusters, ABoxWhollyOutsideOnePlaneIsOutside) {
     const glm::mat4 clip = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f);
     scene::Bounds inside, straddling, beside;
