@@ -28,10 +28,6 @@ void PercentageCloserSoftShadows::bindLookup(const gl::Program& lighting) const 
     lighting.set("uMaxRadiusTexels", maxRadius_);
 }
 
-}  // namespace penumbra::shadows
-
-namespace penumbra::shadows {
-
 void PercentageCloserSoftShadows::fitToView(const ShadowFrame& frame) {
     lightReach_.clear();
     if (!frame.lights || !frame.lightSpaces) return;
@@ -53,10 +49,10 @@ void PercentageCloserSoftShadows::fitToView(const ShadowFrame& frame) {
 }
 
 // The filter's radius is half the penumbra that the blockers' mean depth b makes at the receiver's
-// depth r, and the search's half that of a blocker at the near plane's side (lookup.glsl); every
-// blocker lies at or behind the near plane n. A sun's penumbra, (r - b) 2 tan(angle / 2) texels
+// depth r; the search's is narrower (b a quarter of the way from r to the near plane n, or n under a
+// spot; lookup.glsl). Every blocker lies at or behind n. A sun's penumbra, (r - b) 2 tan(angle / 2)
 // over the texel's size, is widest with b = n; a spot's, size (r - b) / (b r) over the texel scale,
-// too. r is at most the deepest corner's depth, a normal offset further.
+// too. r is at most the region's deepest corner's depth, a normal offset further.
 float PercentageCloserSoftShadows::shadowReachTexelsWithin(int light, const scene::Bounds& region) const {
     const float whole = shadowReachTexels();
     if (light < 0 || static_cast<std::size_t>(light) >= lightReach_.size() || region.empty()) return whole;
