@@ -1,5 +1,7 @@
 #include "render/TintReach.h"
 
+#include "util/PerspectiveDepth.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -308,12 +310,11 @@ float sideMargin(const gpu::LightData& light, SideTolerance kind) {
 }
 
 // The view depth of a perspective light (spot, projector, a point light's cube face) whose window
-// depth f/(f-n) - fn/((f-n) z) is `windowReach` short of view depth z's; 0 where that is before the
-// near plane.
+// depth is `windowReach` short of view depth z's; 0 where that is before the near plane.
 float perspectiveDepthNearer(const gpu::LightData& light, float z, float windowReach) {
     const float n = light.positionNear.w, f = light.directionFar.w;
-    const float window = f / (f - n) - f * n / ((f - n) * z) - windowReach;
-    return window > 0.0f ? f * n / (f - window * (f - n)) : 0.0f;
+    const float window = util::perspectiveWindowDepth(n, f, z) - windowReach;
+    return window > 0.0f ? util::perspectiveViewDepth(n, f, window) : 0.0f;
 }
 
 // tintFootprintSides, the near side's limit first moved nearer the light by `depthReach` of window
@@ -415,10 +416,9 @@ static bool flatCasterShadowsNoneSeenFrom(const gpu::LightData& light, glm::vec3
     }
     float reach = 0.0f;  // view depth a compare may reach past the deepest corner
     if (depthReach > 0.0f) {
-        const float window = far / (far - near) - far * near / ((far - near) * deepest) + depthReach;
-        const float rest = far - window * (far - near);
-        if (rest <= 0.0f) return false;  // it may compare past the far plane
-        reach = far * near / rest - deepest;
+        const float reached = util::perspectiveViewDepth(near, far, util::perspectiveWindowDepth(near, far, deepest) + depthReach);
+        if (!std::isfinite(reached)) return false;  // it may compare past the far plane
+        reach = reached - deepest;
     }
     const float margin = 2.0f * padTexels * light.shadow.w * deepest + 2.0f * reach / leastCos + deepest / 4096.0f;
     return lowest > margin;

@@ -3,7 +3,6 @@
 #include "GlTestSupport.h"
 
 #include "render/Offscreen.h"
-#include "scene/Shapes.h"
 
 #include <cmath>
 
@@ -575,10 +574,7 @@ TEST(Culling, ClustersOfABigMeshCullPerCubeFaceAndCascadeWithTheSamePixels) {
     for (const Case c : {Case{"hard", lamp, near, 1.0f}, Case{"pcf-poisson16", lamp, near, 1.0f}, Case{"cascaded", sun, close, 4.0f}}) {
         scene::Scene s = sceneFromJson(R"({ "camera": )" + std::string(c.camera) + R"(, "lights": [ )" + c.light + R"( ],
           "objects": [ { "shape": "plane", "size": [60, 60] }, { "shape": "sphere", "position": [0, )" + std::to_string(c.radius) + R"(, 0] } ] })");
-        scene::Mesh& ball = s.meshes[static_cast<std::size_t>(s.objects[1].mesh)];
-        const int material = ball.parts[0].material;
-        ball = scene::shapes::sphere(c.radius, 256, 128);
-        ball.parts[0].material = material;
+        const scene::Mesh& ball = makeBigSphere(s, 1, c.radius);
         ASSERT_GE(ball.triangleCount(), render::kClusteredPartTriangles);
         auto renderWith = [&](bool clusters, std::size_t& triangles) {
             render::RenderOptions options;

@@ -3,6 +3,7 @@
 #include "gl/Debug.h"
 #include "platform/EglContext.h"
 #include "render/Offscreen.h"
+#include "scene/Shapes.h"
 #include "scene/io/SceneFile.h"
 
 #include <algorithm>
@@ -51,6 +52,14 @@ private:
     std::unique_ptr<platform::EglContext> context_;
 };
 }  // namespace
+
+const scene::Mesh& makeBigSphere(scene::Scene& scene, std::size_t object, float radius) {
+    scene::Mesh& mesh = scene.meshes[static_cast<std::size_t>(scene.objects[object].mesh)];
+    const int material = mesh.parts[0].material;
+    mesh = scene::shapes::sphere(radius, 256, 128);
+    mesh.parts[0].material = material;
+    return mesh;
+}
 
 scene::Scene sceneFromJson(const std::string& json) {
     return scene::io::parseSceneJson(json, std::filesystem::path(PENUMBRA_TEST_DATA) / "inline.json");

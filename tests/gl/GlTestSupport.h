@@ -25,6 +25,10 @@ struct Frame {
 
 scene::Scene sceneFromJson(const std::string& json);
 
+// Object `object`'s mesh made a sphere of `radius` and 65,536 triangles in one part (its material
+// kept): big enough that the renderer cuts it into clusters (render::kClusteredPartTriangles).
+const scene::Mesh& makeBigSphere(scene::Scene& scene, std::size_t object, float radius);
+
 // The span of visibility values seen, from [0, 1] outwards: a light's visibility never leaves
 // [0, 1] (to 1e-4). Cascades blended past their weights once gave -21..22.
 struct VisibilitySpan {

@@ -7,7 +7,6 @@
 
 #include "gl/Debug.h"
 #include "render/Offscreen.h"
-#include "scene/Shapes.h"
 
 #include <cmath>
 
@@ -121,10 +120,7 @@ TEST(KeptCascades, ABigMeshsClustersFollowTheColumnsWhileTheCameraTurns) {
       "camera": { "position": [5, 2, 5], "target": [0, 2, 0], "near": 0.1, "far": 60 },
       "lights": [ { "type": "directional", "direction": [-0.4, -1, -0.3], "shadow": { "resolution": 512 } } ],
       "objects": [ { "shape": "plane", "size": [60, 60] }, { "shape": "sphere", "position": [0, 4, 0] } ] })");
-    scene::Mesh& ball = s.meshes[static_cast<std::size_t>(s.objects[1].mesh)];
-    const int material = ball.parts[0].material;
-    ball = scene::shapes::sphere(4.0f, 256, 128);
-    ball.parts[0].material = material;
+    const scene::Mesh& ball = makeBigSphere(s, 1, 4.0f);
     ASSERT_GE(ball.triangleCount(), render::kClusteredPartTriangles);
     Pair pair(s, "cascaded");
     std::size_t kept = 0, redrawn = 0;

@@ -1,6 +1,7 @@
 #include "shadows/pcss/PercentageCloserSoftShadows.h"
 
 #include "util/Digest.h"
+#include "util/PerspectiveDepth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,8 +67,7 @@ float PercentageCloserSoftShadows::shadowReachTexelsWithin(int light, const scen
             continue;
         }
         if (!(s.w > 0.0f)) return whole;  // behind the light: its depth bounds nothing
-        const float window = std::min(s.z / s.w, 1.0f);  // view depth from the window depth of a GL perspective
-        deepest = std::max(deepest, l.far * l.near / (l.far - window * (l.far - l.near)));
+        deepest = std::max(deepest, util::perspectiveViewDepth(l.near, l.far, std::min(s.z / s.w, 1.0f)));
     }
     float penumbra = 0.0f;
     if (!l.perspective) {
