@@ -5,6 +5,7 @@
 #include "platform/EglContext.h"
 #include "reference/Comparison.h"
 #include "render/Offscreen.h"
+#include "shadows/ShadowTechnique.h"
 #include "scene/io/SceneFile.h"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 namespace penumbra::app {
 
@@ -93,12 +95,54 @@ int runReference(const ReportJob& job) {
     return 0;
 }
 
+namespace {
+
+// One entry of compare's --techniques: "TECHNIQUE[:name=value...]", its own parameters over --param's.
+struct CompareVariant {
+    std::string label, technique;
+    shadows::ParameterValues own, parameters;
+};
+
+std::vector<CompareVariant> compareVariants(const ReportJob& job) {
+    std::vector<CompareVariant> variants;
+    for (const std::string& spec : job.techniques) {
+        CompareVariant v{spec, {}, {}, job.render.parameters};
+        try {
+            std::tie(v.technique, v.own) = shadows::splitTechniqueParameters(spec);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--techniques: '" + spec + "': expected TECHNIQUE[:name=value...] (" + e.what() + ")");
+        }
+        if (!shadows::isKnownTechnique(v.technique))
+            throw std::invalid_argument("unknown shadow technique '" + v.technique + "'; known: " + shadows::knownTechniqueNames());
+        v.parameters.insert(v.parameters.end(), v.own.begin(), v.own.end());  // applied in order: its own win
+        variants.push_back(std::move(v));
+    }
+    if (variants.empty()) throw std::invalid_argument("--techniques names no technique");
+    return variants;
+}
+
+// A variant's own parameters must be its technique's (a misspelt one would score the plain
+// technique under the variant's label); --param's apply where they fit. Needs a GL context: a
+// technique builds its programs when made. Before the reference is traced, so as to fail early.
+void checkOwnParameters(const std::vector<CompareVariant>& variants) {
+    for (const CompareVariant& v : variants) {
+        if (v.own.empty()) continue;
+        const auto technique = shadows::createTechnique(v.technique);
+        const std::vector<std::string> unknown = shadows::applyParameters(technique->parameters(), v.own);
+        if (unknown.empty()) continue;
+        std::string known;
+        for (const auto& parameter : technique->parameters()) known += (known.empty() ? "" : ", ") + parameter.name;
+        throw std::invalid_argument("--techniques: '" + v.label + "': " + v.technique + " has no parameter '" + unknown.front() +
+                                    "'; its parameters: " + (known.empty() ? "none" : known));
+    }
+}
+
+}  // namespace
+
 int runCompare(const ReportJob& job) {
-    for (const auto& t : job.techniques)
-        if (!shadows::isKnownTechnique(t))
-            throw std::invalid_argument("unknown shadow technique '" + t + "'; known: " + shadows::knownTechniqueNames());
-    if (job.techniques.empty()) throw std::invalid_argument("--techniques names no technique");
+    const std::vector<CompareVariant> variants = compareVariants(job);
     Session s = open(job);
+    checkOwnParameters(variants);
     Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
     warnIfNothingBehindGlass(job, cmp, "compare");
     cmp.setRenderOptions(job.render);
@@ -109,30 +153,35 @@ int runCompare(const ReportJob& job) {
     std::vector<std::vector<std::uint8_t>> shaded, heat;
     json rows = json::array();
     const bool motion = job.motionFrames > 1;
-    std::printf("\n%-14s %9s %9s %11s %9s %10s %10s %10s%s\n", "technique", "RMSE", "wrong %", "colour err",
+    int labelWidth = 14;
+    for (const CompareVariant& v : variants) labelWidth = std::max(labelWidth, static_cast<int>(v.label.size()));
+    std::printf("\n%-*s %9s %9s %11s %9s %10s %10s %10s%s\n", labelWidth, "technique", "RMSE", "wrong %", "colour err",
                 "noise", "shadow ms", "frame ms", "MiB", motion ? "  temporal  crawl %" : "");
-    for (const auto& name : job.techniques) {
-        const TechniqueScore sc = cmp.evaluate(name, job.render.shadowResolution, job.timedFrames, job.render.parameters);
+    for (const CompareVariant& v : variants) {
+        const TechniqueScore sc = cmp.evaluate(v.technique, job.render.shadowResolution, job.timedFrames, v.parameters);
         shaded.push_back(cmp.shade(sc.visibility));
         heat.push_back(cmp.heatMap(sc));
-        util::writePng(job.outDir / (name + ".png"), job.width, job.height, shaded.back());
-        util::writePng(job.outDir / (name + "_heat.png"), job.width, job.height, heat.back());
+        const std::string file = safeName(v.label);  // a plain technique's name as it is
+        util::writePng(job.outDir / (file + ".png"), job.width, job.height, shaded.back());
+        util::writePng(job.outDir / (file + "_heat.png"), job.width, job.height, heat.back());
         const double mib = static_cast<double>(sc.memoryBytes) / (1024.0 * 1024.0);
-        std::printf("%-14s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f", name.c_str(), sc.rmse, 100.0 * sc.wrongShare,
+        std::printf("%-*s %9.4f %9.3f %11.4f %9.4f %10.2f %10.2f %10.2f", labelWidth, v.label.c_str(), sc.rmse, 100.0 * sc.wrongShare,
                     sc.colourError, sc.noise, sc.shadowMs, sc.totalMs, mib);
         json moving = nullptr;
         if (motion) {
-            const MotionScore m = cmp.evaluateMotion(name, job.render.shadowResolution, job.motionFrames,
-                                                     job.motionPixelsPerFrame, job.render.parameters);
+            const MotionScore m = cmp.evaluateMotion(v.technique, job.render.shadowResolution, job.motionFrames,
+                                                     job.motionPixelsPerFrame, v.parameters);
             std::printf(" %9.4f %8.3f", m.temporalError, 100.0 * m.crawlShare);
             moving = {{"frames", m.frames}, {"pixels_per_frame", job.motionPixelsPerFrame},
                       {"temporal_error", m.temporalError}, {"crawl_share", m.crawlShare}, {"compared", m.pixels}};
         }
         std::printf("\n");
-        rows.push_back({{"technique", name}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
+        json own = json::object();
+        for (const auto& [name, value] : v.own) own[name] = value;
+        rows.push_back({{"technique", v.technique}, {"label", v.label}, {"parameters", own}, {"rmse", sc.rmse}, {"wrong_pixel_share", sc.wrongShare},
                         {"colour_error", sc.colourError}, {"noise", sc.noise}, {"compared_pixels", sc.pixels},
                         {"coloured_pixels", sc.colouredPixels}, {"shadow_ms", sc.shadowMs}, {"frame_ms", sc.totalMs},
-                        {"memory_bytes", sc.memoryBytes}, {"image", name + ".png"}, {"heat_map", name + "_heat.png"},
+                        {"memory_bytes", sc.memoryBytes}, {"image", file + ".png"}, {"heat_map", file + "_heat.png"},
                         {"motion", moving}});
     }
     // Side by side: cells of (image over heat map) at half size, five to a row; the reference's

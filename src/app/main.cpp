@@ -127,7 +127,9 @@ int main(int argc, char** argv) {
     }
     ref->add_option("--out", report.outDir, "output directory (default ./reference)");
     cmp->add_option("--out", report.outDir, "output directory (default ./compare)");
-    cmp->add_option("--techniques", techniqueList, "comma-separated technique names (default: all)");
+    cmp->add_option("--techniques", techniqueList,
+                    "comma-separated techniques (default: all); each may name parameters of its own over --param's, "
+                    "technique:name=value[:name=value...], to score variants side by side, e.g. msm,msm:mipmaps=false");
     app::addRenderOptions(*cmp, report.render, {.technique = false, .overlay = false, .transparency = false});
     cmp->add_option("--timed-frames", report.timedFrames, "frames timed per technique (default 3)")->check(CLI::Range(1, 1000));
     cmp->add_option("--motion-frames", report.motionFrames,

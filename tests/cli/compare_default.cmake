@@ -22,6 +22,28 @@ if(NOT out MATCHES "technique +RMSE +wrong %")
   message(FATAL_ERROR "no table printed")
 endif()
 
+# Variants side by side: msm with and without its mip levels, each row labelled, its own parameters
+# in the JSON, its own files; the variant's score differs from the plain technique's.
+execute_process(COMMAND "${PENUMBRA}" compare --techniques msm,msm:mipmaps=false --size 320x180 --timed-frames 1 --out "${OUT}/variants"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "penumbra compare with a variant exited with ${rc}: ${err}")
+endif()
+file(READ "${OUT}/variants/compare.json" j)
+string(JSON plain_label GET "${j}" techniques 0 label)
+string(JSON variant_label GET "${j}" techniques 1 label)
+string(JSON variant_technique GET "${j}" techniques 1 technique)
+string(JSON variant_mipmaps GET "${j}" techniques 1 parameters mipmaps)
+string(JSON plain_rmse GET "${j}" techniques 0 rmse)
+string(JSON variant_rmse GET "${j}" techniques 1 rmse)
+if(NOT plain_label STREQUAL "msm" OR NOT variant_label STREQUAL "msm:mipmaps=false" OR NOT variant_technique STREQUAL "msm"
+   OR NOT variant_mipmaps STREQUAL "false" OR plain_rmse EQUAL variant_rmse)
+  message(FATAL_ERROR "variant rows: '${plain_label}' ${plain_rmse}, '${variant_label}' (${variant_technique}, mipmaps ${variant_mipmaps}) ${variant_rmse}")
+endif()
+if(NOT EXISTS "${OUT}/variants/msm_mipmaps_false.png" OR NOT EXISTS "${OUT}/variants/msm_mipmaps_false_heat.png" OR NOT out MATCHES "msm:mipmaps=false +0\\.")
+  message(FATAL_ERROR "the variant's files or its row are missing:\n${out}")
+endif()
+
 # --behind-glass scores the surface seen through the default scene's pane, and says so where a
 # view holds no glass (the zeros it prints then are not a score).
 execute_process(COMMAND "${PENUMBRA}" compare --behind-glass --techniques hard --size 160x90 --timed-frames 1 --out "${OUT}/behind"
