@@ -122,19 +122,28 @@ std::vector<CompareVariant> compareVariants(const ReportJob& job) {
 }
 
 // A variant's own parameters must be its technique's (a misspelt one would score the plain
-// technique under the variant's label); --param's apply where they fit. Needs a GL context: a
-// technique builds its programs when made. Before the reference is traced, so as to fail early.
-void checkOwnParameters(const std::vector<CompareVariant>& variants) {
+// technique under the variant's label); each of --param's must be some compared technique's, and
+// applies where it fits. Needs a GL context: a technique builds its programs when made. Before the
+// reference is traced, so as to fail early.
+void checkParameters(const std::vector<CompareVariant>& variants, const shadows::ParameterValues& common) {
+    std::vector<std::string> unmatched;  // --param's names no technique has yet
+    for (const auto& [name, value] : common) unmatched.push_back(name);
     for (const CompareVariant& v : variants) {
-        if (v.own.empty()) continue;
+        if (v.own.empty() && unmatched.empty()) continue;
         const auto technique = shadows::createTechnique(v.technique);
-        const std::vector<std::string> unknown = shadows::applyParameters(technique->parameters(), v.own);
-        if (unknown.empty()) continue;
         std::string known;
-        for (const auto& parameter : technique->parameters()) known += (known.empty() ? "" : ", ") + parameter.name;
-        throw std::invalid_argument("--techniques: '" + v.label + "': " + v.technique + " has no parameter '" + unknown.front() +
-                                    "'; its parameters: " + (known.empty() ? "none" : known));
+        for (const auto& parameter : technique->parameters()) {
+            known += (known.empty() ? "" : ", ") + parameter.name;
+            std::erase(unmatched, parameter.name);
+        }
+        shadows::applyParameters(technique->parameters(), common);  // a value it does not take throws here
+        const std::vector<std::string> unknown = shadows::applyParameters(technique->parameters(), v.own);
+        if (!unknown.empty())
+            throw std::invalid_argument("--techniques: '" + v.label + "': " + v.technique + " has no parameter '" + unknown.front() +
+                                        "'; its parameters: " + (known.empty() ? "none" : known));
     }
+    if (!unmatched.empty())
+        throw std::invalid_argument("--param " + unmatched.front() + ": no technique compared has that parameter (`penumbra techniques --verbose` lists them)");
 }
 
 }  // namespace
@@ -142,7 +151,7 @@ void checkOwnParameters(const std::vector<CompareVariant>& variants) {
 int runCompare(const ReportJob& job) {
     const std::vector<CompareVariant> variants = compareVariants(job);
     Session s = open(job);
-    checkOwnParameters(variants);
+    checkParameters(variants, job.render.parameters);
     Comparison cmp(s.scene, job.width, job.height, job.time, surfacesOf(job));
     warnIfNothingBehindGlass(job, cmp, "compare");
     cmp.setRenderOptions(job.render);

@@ -23,6 +23,8 @@ expect_failure("no lights" "${PENUMBRA}" compare "${DATA}/missing_texture.json" 
 # compare's variants: a parameter the technique lacks, a part without '=', before the reference is traced.
 expect_failure("'msm:nonsense=1': msm has no parameter 'nonsense'; its parameters: blur_radius" "${PENUMBRA}" compare --techniques hard,msm:nonsense=1 --out "${tmp}")
 expect_failure("'msm:mipmaps': expected TECHNIQUE[:name=value...]" "${PENUMBRA}" compare --techniques msm:mipmaps --out "${tmp}")
+# --param applies where a compared technique has the name; a name none has is a typo.
+expect_failure("--param mipmap: no technique compared has that parameter" "${PENUMBRA}" compare --techniques hard,msm --param mipmap=false --out "${tmp}")
 expect_failure("no lights" "${PENUMBRA}" reference "${DATA}/missing_texture.json" --out "${tmp}")
 # Typed parameters: a choice names its labels, a flag its values, an unknown name the known ones.
 expect_failure("pcf9 | poisson16 | poisson20 | random30 | cross13 | box16 | box64" "${PENUMBRA}" render --technique cssm2 --param filter=gaussian --out "${tmp}")
