@@ -119,11 +119,11 @@ void printTable(const std::vector<bench::CaseResult>& results) {
     if (!results.empty() && results.front().interleaveFrames > 0)
         std::printf("each scene's cases measured together, in turns of %d frames each (the first two and the last of a turn not counted)\n",
                     results.front().interleaveFrames);
-    std::printf("%-30s %-14s %9s %9s %8s %8s %8s %8s %9s %10s %12s\n", "case", "scene", "frame ms", "p95", "FPS", "GPU ms",
-                "shadow", "opaque", "transl.", "memory MiB", "shadow tris");
+    std::printf("%-30s %-14s %9s %9s %8s %8s %8s %8s %8s %9s %10s %12s\n", "case", "scene", "frame ms", "p95", "FPS", "CPU ms",
+                "GPU ms", "shadow", "opaque", "transl.", "memory MiB", "shadow tris");
     for (const auto& r : results) {
-        std::printf("%-30.30s %-14.14s %9.2f %9.2f %8.1f %8.2f %8.2f %8.2f %9.2f %10.2f %12.0f\n", bench::caseLabel(r).c_str(),
-                    r.sceneName.c_str(), r.frameMs.mean, r.frameMs.p95, r.fpsMean, r.gpuFrameMs.median, r.passMs[0].median,
+        std::printf("%-30.30s %-14.14s %9.2f %9.2f %8.1f %8.2f %8.2f %8.2f %8.2f %9.2f %10.2f %12.0f\n", bench::caseLabel(r).c_str(),
+                    r.sceneName.c_str(), r.frameMs.mean, r.frameMs.p95, r.fpsMean, r.cpuFrameMs.median, r.gpuFrameMs.median, r.passMs[0].median,
                     r.passMs[1].median, r.passMs[2].median, static_cast<double>(r.shadowMemoryBytes) / 1048576.0,
                     r.shadowTrianglesPerFrame);
         if (r.measurementsRepeated > 0)

@@ -154,6 +154,7 @@ struct CaseRun {
         const Clock::time_point start = Clock::now();
         const float t = static_cast<float>(sceneFrame++) * settings.sceneStep;
         engine->frame(t, settings.fixedCamera ? scene.camera : benchCamera(scene, t), settings.width, settings.height);
+        lastCpuMs = millisecondsSince(start);
         pacer.submitted();
         ++frameNumber;
         return start;
@@ -172,6 +173,7 @@ struct CaseRun {
         sceneFrame = 0;
         frameMs.clear();
         triangles = 0;
+        cpuMs.clear();
         for (auto& p : pass) p.clear();
         gpuTotal.clear();
     }
@@ -182,8 +184,9 @@ struct CaseRun {
     std::unique_ptr<Engine> engine;
     std::uint64_t frameNumber = 0, sceneFrame = 0;
     CaseResult r;
-    // The measurement's samples: wall ms per frame, shadow triangles, GPU ms per pass and in all.
-    std::vector<double> frameMs;
+    // The measurement's samples: wall ms per frame, CPU ms per frame, shadow triangles, GPU ms per pass and in all.
+    std::vector<double> frameMs, cpuMs;
+    double lastCpuMs = 0;  // step()'s frame: CaseResult::cpuFrameMs
     double triangles = 0;
     std::array<std::vector<double>, render::kPassCount> pass;
     std::vector<double> gpuTotal;
@@ -223,6 +226,7 @@ void measureAlone(CaseRun& run, const std::function<void(double)>& progress) {
         const Clock::time_point start = run.step();
         if (i > 0) run.frameMs.push_back(millisecondsBetween(last, start));
         last = start;
+        run.cpuMs.push_back(run.lastCpuMs);
         run.triangles += static_cast<double>(run.engine->shadowTriangles());
         const double elapsed = millisecondsSince(measureStart);
         // N frames give N intervals: N - 1 between starts, and the last one's start to its end.
@@ -260,6 +264,7 @@ void measureInterleaved(std::vector<std::unique_ptr<CaseRun>>& runs, const Bench
                 if (f < kTurnSkip || f + 1 == turn || !wanted) continue;
                 kept.push_back(static_cast<std::size_t>(f));
                 measured[k].push_back(run.frameNumber - 1);
+                run.cpuMs.push_back(run.lastCpuMs);
                 run.triangles += static_cast<double>(run.engine->shadowTriangles());
             }
             for (std::size_t f : kept) run.frameMs.push_back(millisecondsBetween(starts[f], starts[f + 1]));
@@ -349,8 +354,10 @@ void finish(CaseRun& run) {
     for (int p = 0; p < render::kPassCount; ++p) r.passMs[static_cast<std::size_t>(p)] = summarize(run.pass[static_cast<std::size_t>(p)]);
     r.passSamples = run.pass;
     r.frameSamples = run.frameMs;
+    r.cpuSamples = run.cpuMs;
     r.gpuFrameMs = summarize(run.gpuTotal);
     r.frameMs = summarize(run.frameMs);
+    r.cpuFrameMs = summarize(run.cpuMs);
     r.shadowTrianglesPerFrame = run.triangles / static_cast<double>(run.frameMs.size());
     r.fpsMean = 1000.0 / r.frameMs.mean;
     r.fpsMin = 1000.0 / r.frameMs.max;

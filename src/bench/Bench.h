@@ -66,6 +66,10 @@ struct CaseResult {
     std::array<Summary, render::kPassCount> passMs;  // GPU query ms per pass
     Summary gpuFrameMs;                             // sum of the passes
     Summary frameMs;                                // wall clock between frame starts
+    // The frame's calls on the thread that makes them: from its start until the engine's frame
+    // returns (after the wait for the frame two before it). Above gpuFrameMs on a GPU, the frame is
+    // the CPU's; on llvmpipe it also holds the vertex stage and binning, which run on that thread.
+    Summary cpuFrameMs;
     double fpsMean = 0, fpsMin = 0, fpsMax = 0, fpsP95 = 0;  // fpsP95: 95 % of frames ran at least this fast
     std::size_t shadowMemoryBytes = 0;
     double shadowTrianglesPerFrame = 0;
@@ -90,8 +94,9 @@ struct CaseResult {
     int glWarnings = 0;  // driver warnings while the case ran (its frames paid for their callbacks)
     int width = 0, height = 0;
     std::vector<std::uint8_t> image;  // RGBA8, top row first (empty unless settings.images)
-    // Every measured sample: wall frame ms, and GPU ms per pass.
+    // Every measured sample: wall frame ms, CPU frame ms (the same frames, in order), and GPU ms per pass.
     std::vector<double> frameSamples;
+    std::vector<double> cpuSamples;
     std::array<std::vector<double>, render::kPassCount> passSamples;
 };
 

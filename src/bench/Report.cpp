@@ -190,6 +190,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
             {"pass_gpu_ms", passes},
             {"gpu_frame_ms", summaryJson(r.gpuFrameMs)},
             {"frame_ms", summaryJson(r.frameMs)},
+            {"cpu_frame_ms", summaryJson(r.cpuFrameMs)},
             {"frame_ms_pair_median", pairedMedian(r.frameSamples)},
             {"fps", {{"mean", r.fpsMean}, {"min", r.fpsMin}, {"max", r.fpsMax}, {"p95", r.fpsP95}}},
             {"shadow_memory_bytes", r.shadowMemoryBytes},
@@ -202,7 +203,7 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
             {"gl_errors", r.glErrors},
             {"gl_warnings", r.glWarnings},
             {"image", r.image.empty() ? json(nullptr) : json(imageName(i, r))},
-            {"samples", {{"frame_ms", r.frameSamples}, {"pass_gpu_ms", samples}}},
+            {"samples", {{"frame_ms", r.frameSamples}, {"cpu_frame_ms", r.cpuSamples}, {"pass_gpu_ms", samples}}},
         };
         if (baseline) {
             if (const json* old = findBaseline(*baseline, c)) {
@@ -235,6 +236,8 @@ json benchJson(const std::vector<CaseResult>& results, const BenchSettings& sett
                               std::to_string(render::FrameTimer::kRingDepth) + " frames"},
           {"gpu_frame_ms", "sum of the pass queries of one frame"},
           {"frame_ms", "std::chrono::steady_clock between consecutive frame starts; at most 2 frames in flight (fences)"},
+          {"cpu_frame_ms", "std::chrono::steady_clock from a frame's start (after the wait for the frame two before it) until its calls return: "
+                           "the submitting thread's share of the frame (on llvmpipe it also holds the vertex stage and binning)"},
           {"frame_ms_pair_median", "median of the means of consecutive frame_ms pairs (bench::pairedMedian); the rounds' ratios use it"},
           {"calibration", "glFinish before and after each pass, steady_clock around it, beside the same pass's query"},
           {"sub_pass_wall_ms", "with calibration: each debug group's (a pass's parts) glFinish-bounded wall ms per frame, by path, from frames of their own (render/SubPassClock.h)"}}},
@@ -261,7 +264,7 @@ static std::string csv(const json& doc) {
     std::ostringstream out;
     out << "suite,scene,scene_triangles,technique,label,shadow_resolution,width,height,frames,frame_ms_mean,frame_ms_p95,"
            "fps_mean,fps_min,fps_max,gpu_frame_ms_median,shadow_ms_median,opaque_ms_median,translucent_ms_median,"
-           "post_ms_median,shadow_memory_bytes,shadow_triangles_per_frame,calibration_flagged,baseline_frame_ratio\n";
+           "post_ms_median,shadow_memory_bytes,shadow_triangles_per_frame,calibration_flagged,baseline_frame_ratio,cpu_frame_ms_median\n";
     const auto quoted = [](const std::string& s) {
         std::string q = "\"";
         for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -280,7 +283,8 @@ static std::string csv(const json& doc) {
             << p["shadow"]["median"] << ',' << p["opaque"]["median"] << ',' << p["translucent"]["median"] << ','
             << p["post"]["median"] << ',' << c["shadow_memory_bytes"] << ',' << c["shadow_triangles_per_frame"] << ','
             << (flagged ? "yes" : "no") << ','
-            << (c.contains("baseline") && c["baseline"].is_object() ? c["baseline"]["frame_ms_mean_ratio"].dump() : "") << '\n';
+            << (c.contains("baseline") && c["baseline"].is_object() ? c["baseline"]["frame_ms_mean_ratio"].dump() : "") << ','
+            << c["cpu_frame_ms"]["median"] << '\n';
     }
     return out.str();
 }

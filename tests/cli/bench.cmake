@@ -34,6 +34,30 @@ function(thousandths text out)
   set(${out} ${value} PARENT_SCOPE)
 endfunction()
 
+# CPU ms per frame (cpu_frame_ms): one sample per counted frame, in the order of the wall intervals.
+# A frame's calls return before the next frame starts (or, for the last, before the glFinish that
+# ends its interval): each sample is above 0 and at most its frame's wall interval. A CPU clock
+# taken over the wrong span (the pacer's wait, or past the next start) or given to the wrong
+# frames fails here.
+function(check_cpu_samples doc i what)
+  string(JSON cpuCount GET "${doc}" cases ${i} cpu_frame_ms count)
+  string(JSON cpuSamples LENGTH "${doc}" cases ${i} samples cpu_frame_ms)
+  string(JSON wallSamples LENGTH "${doc}" cases ${i} samples frame_ms)
+  if(NOT cpuCount EQUAL wallSamples OR NOT cpuSamples EQUAL wallSamples)
+    message(FATAL_ERROR "${what}: cpu_frame_ms counts ${cpuCount} and ${cpuSamples} samples against ${wallSamples} frame times")
+  endif()
+  math(EXPR lastSample "${wallSamples} - 1")
+  foreach(k RANGE ${lastSample})
+    string(JSON cpu GET "${doc}" cases ${i} samples cpu_frame_ms ${k})
+    string(JSON wall GET "${doc}" cases ${i} samples frame_ms ${k})
+    thousandths("${cpu}" c)
+    thousandths("${wall}" w)
+    if(NOT c GREATER 0 OR c GREATER w)
+      message(FATAL_ERROR "${what}: frame ${k} took ${cpu} ms of CPU in a ${wall} ms interval; expected 0 < CPU <= interval")
+    endif()
+  endforeach()
+endfunction()
+
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   string(JSON technique GET "${doc}" cases ${i} technique)
@@ -54,6 +78,7 @@ foreach(i RANGE ${last})
   if(NOT frames EQUAL 4 OR NOT samples EQUAL 4 OR NOT shadowSamples EQUAL 4)
     message(FATAL_ERROR "${what}: ${frames} frame times, ${samples} frame samples, ${shadowSamples} shadow samples; expected 4 each")
   endif()
+  check_cpu_samples("${doc}" ${i} "${what}")
   if(NOT frameMean GREATER 0 OR NOT gpu GREATER 0)
     message(FATAL_ERROR "${what}: frame ${frameMean} ms, GPU ${gpu} ms: both must be > 0")
   endif()
@@ -330,6 +355,7 @@ foreach(i 0 1 2 3)
     message(FATAL_ERROR "--interleave 5, case ${i} (${technique}): turns of ${turn}, ${frames} frame times, ${shadowSamples} shadow and "
                         "${opaqueSamples} opaque GPU samples, ${errors} GL errors; expected 5, 2, 2, 2, 0")
   endif()
+  check_cpu_samples("${doc}" ${i} "--interleave 5, case ${i} (${technique})")
   # The plane alone in the map: 2 triangles (the sphere's hundreds would show in the mean).
   if(triangles GREATER 10)
     message(FATAL_ERROR "--interleave 5, case ${i} (${technique}): ${triangles} triangles per frame into the map; the sphere was "
