@@ -13,6 +13,19 @@ foreach(f bin/penumbra share/penumbra/shaders/passes/lighting.frag share/penumbr
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+# Every shader stage of the source tree, whatever its extension (a compute shader's .comp was
+# left out of the install's patterns until 2026-12-03).
+file(GLOB_RECURSE shaders RELATIVE "${SOURCE}" "${SOURCE}/src/*" "${SOURCE}/shaders/*")
+list(FILTER shaders INCLUDE REGEX "\\.(glsl|vert|frag|geom|comp|tesc|tese)$")
+list(LENGTH shaders count)
+if(count LESS 50)
+  message(FATAL_ERROR "found only ${count} shader files under ${SOURCE}")
+endif()
+foreach(f IN LISTS shaders)
+  if(NOT EXISTS "${OUT}/prefix/share/penumbra/${f}")
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
 execute_process(
   COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY --unset=PENUMBRA_SHADER_DIR --unset=PENUMBRA_SCENE_DIR
           "${OUT}/prefix/bin/penumbra" render --frames 1 --size 96x64 --technique cssm2 --out run

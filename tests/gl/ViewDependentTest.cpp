@@ -219,7 +219,10 @@ TEST(ViewDependent, ATileGridChangedOnALiveRendererRebuildsTheLookup) {
 }
 
 // SDSM: a wall 20 m ahead hides the rest of a 1 km view; the cascades then split [first
-// visible, last visible] instead of [near, far], and the first cascade's texels shrink.
+// visible, last visible] instead of [near, far], and the first cascade's texels shrink. The first
+// visible depth is the floor under the pre-pass's bottom row of pixels (80 x 45, half the view):
+// 1.7 m below the eye, seen 30 deg x 44/45 below the axis tilted down by atan(0.2 / 20),
+// 1.7 / (0.56452 cos a + sin a) = 2.959 m along the axis; the fit starts 1 % before it.
 TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
     scene::Scene s = sceneFromJson(R"({
       "camera": { "position": [0, 1.7, 0], "target": [0, 1.5, -20], "fov_deg": 60, "near": 0.1, "far": 1000 },
@@ -238,12 +241,14 @@ TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
     const auto plain = cascadesWith(false), sdsm = cascadesWith(true);
     ASSERT_EQ(plain.size(), 4u);
     ASSERT_EQ(sdsm.size(), 4u);
-    std::printf("last split: %.1f m plain, %.1f m SDSM; first cascade texel %.4f m plain, %.4f m SDSM\n", plain.back().splitFar,
+    std::printf("first split %.4f m SDSM; last split: %.1f m plain, %.1f m SDSM; first cascade texel %.4f m plain, %.4f m SDSM\n", sdsm.front().splitNear, plain.back().splitFar,
                 sdsm.back().splitFar, plain.front().texelWorld, sdsm.front().texelWorld);
     EXPECT_FLOAT_EQ(plain.back().splitFar, 1000.0f);
     // The farthest visible depth (along the view axis) is the wall's face, 20 m ahead.
     EXPECT_GT(sdsm.back().splitFar, 19.9f);
     EXPECT_LT(sdsm.back().splitFar, 21.0f);
+    EXPECT_NEAR(sdsm.front().splitNear, 0.99f * 2.959f, 0.01f);
+    EXPECT_FLOAT_EQ(plain.front().splitNear, s.camera.near);
     EXPECT_LT(sdsm.front().texelWorld, 0.5f * plain.front().texelWorld);
 }
 

@@ -3,13 +3,33 @@
 #include "gl/PassState.h"
 #include "gpu/ShaderContract.h"
 
-#include <algorithm>
-#include <vector>
+#include <array>
+#include <cstdint>
 
 namespace penumbra::shadows {
 
+std::pair<float, float> DepthBounds::reduce(glm::ivec2 size) {
+    if (!reduce_.id()) {
+        reduce_ = gl::Program::build({.compute = "src/shadows/cascaded/depth_bounds.comp"});
+        bounds_ = gl::Buffer(2 * sizeof(std::uint32_t), nullptr);
+    }
+    const std::array<float, 2> cleared{1.0f, 0.0f};  // nearest, farthest: empty until a texel is covered
+    bounds_.update(0, sizeof(cleared), cleared.data());
+    bounds_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindTextureUnit(0, depth_.id());
+    reduce_.use();
+    constexpr int kGroup = 8 * 16;  // depth_bounds.comp's texels per group on each axis
+    glDispatchCompute(static_cast<GLuint>((size.x + kGroup - 1) / kGroup), static_cast<GLuint>((size.y + kGroup - 1) / kGroup), 1);
+    glBindTextureUnit(0, 0);
+    glUseProgram(0);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the shader's atomics, before the read below
+    std::array<float, 2> read{};
+    glGetNamedBufferSubData(bounds_.id(), 0, sizeof(read), read.data());
+    return {read[0], read[1]};
+}
+
 std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& frame) {
-    // A quarter of the pixels is plenty for the bounds and keeps the read-back small.
+    // A quarter of the pixels is plenty for the bounds and keeps the pre-pass cheap.
     const glm::ivec2 size = glm::max(frame.viewport / 2, glm::ivec2(1));
     if (size != size_) {
         size_ = size;
@@ -27,14 +47,7 @@ std::optional<std::pair<float, float>> DepthBounds::measure(const ShadowFrame& f
         program_.set("uLightViewProj", cam.projection(frame.aspect) * cam.view());
         frame.drawSurfaces(program_, -1);
     }
-    std::vector<float> depth(static_cast<std::size_t>(size.x) * size.y);
-    glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
-    float lo = 1.0f, hi = 0.0f;
-    for (float d : depth)
-        if (d < 1.0f) {
-            lo = std::min(lo, d);
-            hi = std::max(hi, d);
-        }
+    const auto [lo, hi] = reduce(size);
     if (lo > hi) return std::nullopt;
     auto distance = [&](float d) {  // window depth -> view distance (perspective)
         const float n = cam.near, f = cam.far;
