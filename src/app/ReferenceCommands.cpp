@@ -123,13 +123,15 @@ std::vector<CompareVariant> compareVariants(const ReportJob& job) {
 
 // A variant's own parameters must be its technique's (a misspelt one would score the plain
 // technique under the variant's label); each of --param's must be some compared technique's, and
-// applies where it fits. Needs a GL context: a technique builds its programs when made. Before the
+// applies where it fits, and each technique that has it must take its value (every variant is
+// made whenever --param names any: two techniques may share a name with different ranges or
+// choices, as radius_texels does). Needs a GL context: a technique builds its programs when made. Before the
 // reference is traced, so as to fail early.
 void checkParameters(const std::vector<CompareVariant>& variants, const shadows::ParameterValues& common) {
     std::vector<std::string> unmatched;  // --param's names no technique has yet
     for (const auto& [name, value] : common) unmatched.push_back(name);
     for (const CompareVariant& v : variants) {
-        if (v.own.empty() && unmatched.empty()) continue;
+        if (v.own.empty() && common.empty()) continue;
         const auto technique = shadows::createTechnique(v.technique);
         std::string known;
         for (const auto& parameter : technique->parameters()) {
