@@ -9,13 +9,13 @@ namespace penumbra::app {
 
 using render::TransparencyMode;
 
+std::string checkTechniqueName(const std::string& name) {
+    return shadows::isKnownTechnique(name) ? std::string() : "unknown shadow technique '" + name + "'; known: " + shadows::knownTechniqueNames();
+}
+
 void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderCli which) {
     if (which.technique)
-        command.add_option("--technique", options.technique, "shadow technique (see `penumbra techniques`)")
-            ->check([](const std::string& name) {
-                return shadows::isKnownTechnique(name) ? std::string()
-                                                       : "unknown shadow technique '" + name + "'; known: " + shadows::knownTechniqueNames();
-            });
+        command.add_option("--technique", options.technique, "shadow technique (see `penumbra techniques`)")->check(checkTechniqueName);
     if (which.shadowResolution)
         command.add_option("--shadow-res", options.shadowResolution, "shadow-map resolution for every light")
             ->check(CLI::Range(16, 16384));

@@ -24,6 +24,9 @@ void addRenderOptions(CLI::App& command, render::RenderOptions& options, RenderC
 // std::invalid_argument naming the known techniques or the malformed parameter.
 render::RenderOptions splitSideOptions(const render::RenderOptions& left, const std::string& spec);
 
+// CLI11's check of an option that names a technique: "" or the error naming the known ones.
+std::string checkTechniqueName(const std::string& name);
+
 // The positional scene and --size WxH.
 void addSceneAndSize(CLI::App& command, std::filesystem::path& scene, int& width, int& height, const char* defaultSize);
 // --size WxH alone.

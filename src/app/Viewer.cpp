@@ -30,6 +30,7 @@
 #include <memory>
 #include <utility>
 #include <cstdio>
+#include <functional>
 #include <glm/gtx/rotate_vector.hpp>
 
 namespace penumbra::app {
@@ -60,6 +61,10 @@ struct ViewerState {
     bool draggingDivider = false;
     bool swapSides = false;  // x: the split view's renderers change places
     bool byRegion = false;   // k: the scene's regions, each with its own technique (render/RegionView.h)
+    // A technique chosen in the panel is applied after one more frame, which says so: its first
+    // frame builds and compiles its shaders, 3-5 s on llvmpipe with Mesa's shader cache cold, 0.25-0.35 s
+    // warm (default scene, stop 79), and the window would freeze without a word.
+    std::string pendingTechnique;
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -96,6 +101,37 @@ void parameterWidget(const shadows::Parameter& p) {
             break;
     }
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s (default %s)", p.help.c_str(), p.defaultText.c_str());
+}
+
+// The notice drawn over the frame before a chosen technique's first, which may take seconds. Sized
+// here, not auto-resized: ImGui hides an auto-resizing window on its first frame, and this one has
+// only one.
+void drawBuildingNotice(const std::string& technique) {
+    const std::string text = "building " + technique + ": its first frame compiles its shaders";
+    const ImVec2 display = ImGui::GetIO().DisplaySize, padding = ImGui::GetStyle().WindowPadding;
+    const ImVec2 textSize = ImGui::CalcTextSize(text.c_str());
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(textSize.x + 2.0f * padding.x, textSize.y + 2.0f * padding.y), ImGuiCond_Always);
+    ImGui::Begin("building", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::End();
+}
+
+// The panel's choice, applied: the first frame's time (shader compiles included) goes to the log.
+void switchTechnique(render::Renderer& renderer, ViewerState& state, const std::function<void()>& drawFrame) {
+    const std::string name = std::exchange(state.pendingTechnique, {});
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.setTechnique(name);
+        state.byRegion = false;  // a technique chosen in the panel covers the whole scene
+        drawFrame();
+        glFinish();  // the compiles happen at the first draws; count them all
+        const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+        log::info("{}: first frame {} ms (shaders built and compiled)", name, ms.count());
+    } catch (const std::exception& e) {
+        log::error("{}", e.what());
+        drawFrame();
+    }
 }
 
 // The panel: docked on the left, at most a third of the window wide, its sections collapsed
@@ -142,14 +178,8 @@ void drawPanel(render::Renderer& renderer, const render::RegionView* regions, Vi
         const std::string current = renderer.technique().name();
         if (ImGui::BeginCombo("technique", current.c_str())) {
             for (const auto& info : shadows::techniqueRegistry())
-                if (ImGui::Selectable(info.name.c_str(), info.name == current)) {
-                    try {
-                        renderer.setTechnique(info.name);
-                        state.byRegion = false;  // a technique chosen here covers the whole scene
-                    } catch (const std::exception& e) {
-                        log::error("{}", e.what());
-                    }
-                }
+                if (ImGui::Selectable(info.name.c_str(), info.name == current) && info.name != current)
+                    state.pendingTechnique = info.name;  // applied by switchTechnique after this frame
             ImGui::EndCombo();
         }
         int& res = renderer.options().shadowResolution;
@@ -343,6 +373,7 @@ int runViewer(const ViewerOptions& opts) {
         if (count > 0) s->dropped.emplace_back(paths[count - 1]);  // several at once: the last one
     });
     state.dropped = opts.drop;
+    std::string scriptedChoice = opts.choose;  // chosen during the first frame's panel, as a click is
     if (opts.referenceMode) {  // as if r were pressed on the first frame
         int w = 0, h = 0;
         window.framebufferSize(w, h);
@@ -490,10 +521,14 @@ int runViewer(const ViewerOptions& opts) {
                 log::error("{}", e.what());
             }
         }
-        try {
+        const auto drawFrame = [&] {
             if (right) render::renderSplit(renderer, *right, state.divider, state.time, scene.camera, w, h, 0);
             else if (state.byRegion && regions) regions->render(state.time, scene.camera, w, h, 0);
             else renderer.render(state.time, scene.camera, w, h, 0);
+        };
+        try {
+            if (!state.pendingTechnique.empty()) switchTechnique(renderer, state, drawFrame);
+            else drawFrame();
         } catch (const std::exception& e) {
             log::error("{}", e.what());
             return 1;
@@ -504,6 +539,11 @@ int runViewer(const ViewerOptions& opts) {
         if (right && !state.reference) labelSplit(renderer, *right, state.divider);  // the reference covers both halves
         if (state.reference) drawReference(state, renderer);
         if (state.showPanel) drawPanel(renderer, regions.get(), state, controller);
+        if (!scriptedChoice.empty()) state.pendingTechnique = std::exchange(scriptedChoice, {});
+        if (!state.pendingTechnique.empty()) {
+            log::info("building {}: its first frame compiles its shaders", state.pendingTechnique);
+            drawBuildingNotice(state.pendingTechnique);
+        }
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
             ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);

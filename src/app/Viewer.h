@@ -26,6 +26,8 @@ struct ViewerOptions {
     bool referenceMode = false, heatMap = false;
     // Scripted drops: these files arrive on the first frame as if dropped on the window.
     std::vector<std::filesystem::path> drop;
+    // Scripted choice: this technique is chosen in the panel on the first frame ("" = none).
+    std::string choose;
 };
 
 // Opens the window and runs until Esc / close. Returns the process exit code.

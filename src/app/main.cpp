@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     view->add_flag("--reference", viewer.referenceMode, "start in reference mode: the ray-traced frame, traced in the background (r)");
     view->add_flag("--heat-map", viewer.heatMap, "with --reference: show |technique - reference| (g)");
     view->add_option("--drop", viewer.drop, "scripted: deliver FILE on the first frame as if dropped on the window");
+    view->add_option("--choose", viewer.choose, "scripted: choose TECHNIQUE in the panel on the first frame, as a click would")->check(app::checkTechniqueName);
     view->add_option("--controller", viewer.controller, "fly | trackball | orbit")->check(CLI::IsMember({"fly", "trackball", "orbit"}));
     view->add_option("--exit-after", viewer.exitAfterFrames, "quit after N frames (scripted runs)");
     view->add_flag("--gl-debug", viewer.debugContext, "debug GL context with KHR_debug messages");
