@@ -120,18 +120,19 @@ void drawBuildingNotice(const std::string& technique) {
 // The panel's choice, applied: the first frame's time (shader compiles included) goes to the log.
 void switchTechnique(render::Renderer& renderer, ViewerState& state, const std::function<void()>& drawFrame) {
     const std::string name = std::exchange(state.pendingTechnique, {});
+    const auto start = std::chrono::steady_clock::now();
     try {
-        const auto start = std::chrono::steady_clock::now();
         renderer.setTechnique(name);
-        state.byRegion = false;  // a technique chosen in the panel covers the whole scene
-        drawFrame();
-        glFinish();  // the compiles happen at the first draws; count them all
-        const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
-        log::info("{}: first frame {} ms (shaders built and compiled)", name, ms.count());
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // the technique stays as it was
         log::error("{}", e.what());
         drawFrame();
+        return;
     }
+    state.byRegion = false;  // a technique chosen in the panel covers the whole scene
+    drawFrame();
+    glFinish();  // the compiles happen at the first draws; count them all
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
+    log::info("{}: first frame {} ms (shaders built and compiled)", name, ms.count());
 }
 
 // The panel: docked on the left, at most a third of the window wide, its sections collapsed
@@ -539,16 +540,16 @@ int runViewer(const ViewerOptions& opts) {
         if (right && !state.reference) labelSplit(renderer, *right, state.divider);  // the reference covers both halves
         if (state.reference) drawReference(state, renderer);
         if (state.showPanel) drawPanel(renderer, regions.get(), state, controller);
-        if (!scriptedChoice.empty()) state.pendingTechnique = std::exchange(scriptedChoice, {});
-        if (!state.pendingTechnique.empty()) {
-            log::info("building {}: its first frame compiles its shaders", state.pendingTechnique);
-            drawBuildingNotice(state.pendingTechnique);
-        }
         else if (state.showFps) {
             ImGui::SetNextWindowPos(ImVec2(8, 8));
             ImGui::Begin("fps", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
             ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(), shownTimes(renderer, regions.get(), state).totalMs());
             ImGui::End();
+        }
+        if (!scriptedChoice.empty()) state.pendingTechnique = std::exchange(scriptedChoice, {});
+        if (!state.pendingTechnique.empty()) {
+            log::info("building {}: its first frame compiles its shaders", state.pendingTechnique);
+            drawBuildingNotice(state.pendingTechnique);
         }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
