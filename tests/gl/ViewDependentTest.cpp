@@ -252,6 +252,39 @@ TEST(ViewDependent, SdsmSplitsOnlyTheVisibleDepthRange) {
     EXPECT_LT(sdsm.front().texelWorld, 0.5f * plain.front().texelWorld);
 }
 
+// SDSM's bounds on a grid of 5 % steps: a camera stepping 10 cm towards the wall keeps every split
+// (the tight far bound moves from 20.2 m to 20.1, both within the step up to 1.05^62 = 20.6 m), so
+// the cascades hold instead of being fitted and redrawn; a 5 m step moves the last split to the
+// wall's new distance.
+TEST(ViewDependent, SdsmSplitsHoldWhileTheVisibleRangeStaysWithinItsStep) {
+    scene::Scene s = sceneFromJson(R"({
+      "camera": { "position": [0, 1.7, 0], "target": [0, 1.5, -20], "fov_deg": 60, "near": 0.1, "far": 1000 },
+      "lights": [ { "type": "directional", "direction": [-0.5, -1, -0.3], "shadow": { "resolution": 512 } } ],
+      "objects": [ { "shape": "plane", "size": [100, 1000], "position": [0, 0, -480] },
+                   { "shape": "box", "size": [60, 30, 1], "position": [0, 15, -20.5] } ] })");
+    render::RenderOptions options;
+    options.technique = "cascaded";
+    options.parameters = {{"sdsm", "true"}};
+    render::Renderer renderer(s, options);
+    render::OffscreenTarget target(160, 90);
+    auto splitsAt = [&](float z) {
+        scene::Camera camera = s.camera;
+        camera.position.z = z;
+        camera.target.z = z - 20.0f;
+        renderer.render(0.0f, camera, 160, 90, target.framebuffer());
+        std::vector<float> splits;
+        for (const auto& c : dynamic_cast<const shadows::CascadedShadowMap&>(renderer.technique()).cascades())
+            splits.insert(splits.end(), {c.splitNear, c.splitFar});
+        return splits;
+    };
+    const std::vector<float> first = splitsAt(0.0f), stepped = splitsAt(-0.1f), far = splitsAt(-5.0f);
+    ASSERT_EQ(first.size(), 8u);
+    EXPECT_EQ(stepped, first) << "10 cm nearer the wall";
+    EXPECT_NEAR(first.back(), std::pow(1.05f, 62.0f), 1e-3f);
+    EXPECT_GT(far.back(), 15.0f);
+    EXPECT_LT(far.back(), 15.0f * 1.05f * 1.05f);
+}
+
 // A warped map's fit is kept while the camera and the objects stand still (WarpedShadowMap::
 // fitViews), and made again when either moves (a small scene, whole in view, so that the sun's
 // plain box does not follow the camera): with every fit the tight one (holdSunBox off), a

@@ -12,6 +12,19 @@
 
 namespace penumbra::shadows {
 
+namespace {
+
+// SDSM's bounds rounded outward onto a geometric grid of 5 % steps. Bounds taken as they come
+// move every frame the camera moves, and with them every split: each cascade's box is fitted
+// again, its map redrawn and its shadow edges swim. On the grid the splits hold while the visible
+// range stays within its steps, the boxes hold (stabilised) and the maps are kept, for at most 5 %
+// more depth range than the tight bounds.
+constexpr float kSdsmStep = 1.05f;
+float sdsmStepDown(float d) { return std::pow(kSdsmStep, std::floor(std::log(d) / std::log(kSdsmStep))); }
+float sdsmStepUp(float d) { return std::pow(kSdsmStep, std::ceil(std::log(d) / std::log(kSdsmStep))); }
+
+}  // namespace
+
 std::vector<Parameter> CascadedShadowMap::declareParameters() {
     return {Parameter::integer("cascades", count_, 1, 8, "number of splits m"),
             Parameter::real("lambda", lambda_, 0, 1, "split scheme: C_i = λ C_log + (1 - λ) C_uni (Zhang et al. 2006)"),
@@ -21,7 +34,7 @@ std::vector<Parameter> CascadedShadowMap::declareParameters() {
             Parameter::flag("debug_tint", debugTint_, "tint each cascade"),
             Parameter::flag("freeze", freeze_, "stop refitting, to fly away and look at the cascades"),
             Parameter::real("max_distance", maxDistance_, 0, 100000, "> 0: split no further than this (world units)"),
-            Parameter::flag("sdsm", sdsm_, "split only the visible depth range, from a camera pre-pass (Lauritzen et al. 2011)"),
+            Parameter::flag("sdsm", sdsm_, "split only the visible depth range, from a camera pre-pass (Lauritzen et al. 2011), rounded out to 5 % steps so that the splits hold"),
             Parameter::flag("draw_frusta", drawFrusta_, "draw each cascade's camera slice and light box with the overlay"),
             Parameter::flag("fit_receivers", fitReceivers_,
                             "draw each cascade only where its camera slice meets the scene (casters culled, texels scissored)")};
@@ -43,8 +56,8 @@ void CascadedShadowMap::fitToView(const ShadowFrame& frame) {
         float near = cam.near, far = maxDistance_ > 0.0f ? std::min(maxDistance_, cam.far) : cam.far;
         if (sdsm_ && frame.drawSurfaces)
             if (const auto bounds = depthBounds_.measure(frame)) {  // SDSM: split only what is visible
-                near = std::max(near, bounds->first * 0.99f);
-                far = std::max(std::min(far, bounds->second * 1.01f), near * 1.01f);
+                near = std::max(near, sdsmStepDown(bounds->first * 0.99f));
+                far = std::max(std::min(far, sdsmStepUp(bounds->second * 1.01f)), near * 1.01f);
             }
         splits_ = cascadeSplits(near, far, count, lambda_);
         fitted_.clear();
