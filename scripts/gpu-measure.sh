@@ -81,6 +81,9 @@ step "stop 72-73 every caster, default scene" 60 penumbra bench --techniques har
 step "default scene, every technique" 150 penumbra bench --techniques all "${hd[@]}" "${short[@]}" --out "$work/default"
 # The view-dependent maps against hard from the scene's own camera, as the llvmpipe tables take them.
 step "default scene, fixed camera" 40 penumbra bench --techniques none,hard,cascaded,lispsm,psm "${hd[@]}" --fixed-camera "${short[@]}" --out "$work/fixed"
+# SDSM's pre-pass and its two-word read-back (stop 79: reduced on the GPU, bounds on 5 % steps):
+# the CPU ms column against the GPU ms says whether the fit's wait for the GPU costs the frame.
+step "default scene, cascaded with sdsm" 30 penumbra bench --techniques cascaded,cascaded:sdsm=true "${hd[@]}" "${short[@]}" --out "$work/sdsm"
 # The float target and its resolve pass against the default straight-into-sRGB frame (render/SrgbTarget.h).
 long_step "default scene, float target" 40 penumbra bench --techniques none,hard,cssm2 "${hd[@]}" --float-target "${short[@]}" --out "$work/float-target"
 long_step "default scene, maps redrawn" 150 penumbra bench --techniques all "${hd[@]}" --redraw-shadow-maps "${short[@]}" --out "$work/redrawn"
