@@ -61,10 +61,18 @@ struct ViewerState {
     bool draggingDivider = false;
     bool swapSides = false;  // x: the split view's renderers change places
     bool byRegion = false;   // k: the scene's regions, each with its own technique (render/RegionView.h)
-    // A technique chosen in the panel is applied after one more frame, which says so: its first
-    // frame builds and compiles its shaders, 3-5 s on llvmpipe with Mesa's shader cache cold, 0.25-0.35 s
-    // warm (default scene, stop 79), and the window would freeze without a word.
-    std::string pendingTechnique;
+    // A technique chosen in the panel (or the split view's right side, v) is made after a frame
+    // that says so: its first frame builds and compiles its shaders, 3-5 s on llvmpipe with Mesa's
+    // shader cache cold, 0.25-0.35 s warm (default scene, stop 79), and the window would freeze
+    // without a word.
+    struct Pending {
+        std::string technique;   // "" = none
+        bool announced = false;  // its notice was drawn in a frame already on screen
+        void set(std::string name) { *this = {std::move(name), false}; }
+        // The technique once announced, taken; "" before.
+        std::string takeAnnounced() { return announced ? std::exchange(*this, {}).technique : std::string(); }
+    };
+    Pending pendingTechnique, pendingSplit;
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -117,22 +125,21 @@ void drawBuildingNotice(const std::string& technique) {
     ImGui::End();
 }
 
-// The panel's choice, applied: the first frame's time (shader compiles included) goes to the log.
-void switchTechnique(render::Renderer& renderer, ViewerState& state, const std::function<void()>& drawFrame) {
-    const std::string name = std::exchange(state.pendingTechnique, {});
+// A technique made (`make`: chosen in the panel, or the split view's right side), then the frame,
+// timed to its end into the log: the first frame of a technique compiles its shaders.
+void makeThenDrawTimed(const std::string& technique, const std::function<void()>& make, const std::function<void()>& drawFrame) {
     const auto start = std::chrono::steady_clock::now();
     try {
-        renderer.setTechnique(name);
-    } catch (const std::exception& e) {  // the technique stays as it was
+        make();
+    } catch (const std::exception& e) {  // nothing changed: the frame as it was
         log::error("{}", e.what());
         drawFrame();
         return;
     }
-    state.byRegion = false;  // a technique chosen in the panel covers the whole scene
     drawFrame();
     glFinish();  // the compiles happen at the first draws; count them all
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start);
-    log::info("{}: first frame {} ms (shaders built and compiled)", name, ms.count());
+    log::info("{}: first frame {} ms (shaders built and compiled)", technique, ms.count());
 }
 
 // The panel: docked on the left, at most a third of the window wide, its sections collapsed
@@ -180,7 +187,7 @@ void drawPanel(render::Renderer& renderer, const render::RegionView* regions, Vi
         if (ImGui::BeginCombo("technique", current.c_str())) {
             for (const auto& info : shadows::techniqueRegistry())
                 if (ImGui::Selectable(info.name.c_str(), info.name == current) && info.name != current)
-                    state.pendingTechnique = info.name;  // applied by switchTechnique after this frame
+                    state.pendingTechnique.set(info.name);  // made and drawn after this frame and its notice
             ImGui::EndCombo();
         }
         int& res = renderer.options().shadowResolution;
@@ -463,12 +470,9 @@ int runViewer(const ViewerOptions& opts) {
                 else enterReference(state, scene, w, h);
             }
             if (pressed(GLFW_KEY_G) && state.reference) state.showHeat = !state.showHeat;
-            if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right) / off
+            if (pressed(GLFW_KEY_V)) {  // split view on (the next technique on the right, after its notice) / off
                 if (right) right.reset();
-                else {
-                    right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), nextTechnique(renderer.technique().name())));
-                    right->holdSunBoxOf(renderer);  // both sides' maps look at the same box
-                }
+                else state.pendingSplit.set(nextTechnique(renderer.technique().name()));
             }
             if (pressed(GLFW_KEY_K) && !scene.regions.empty()) state.byRegion = !state.byRegion;
             if (pressed(GLFW_KEY_X) && right) state.swapSides = true;  // done before the next frame binds them
@@ -528,8 +532,19 @@ int runViewer(const ViewerOptions& opts) {
             else renderer.render(state.time, scene.camera, w, h, 0);
         };
         try {
-            if (!state.pendingTechnique.empty()) switchTechnique(renderer, state, drawFrame);
-            else drawFrame();
+            if (const std::string name = state.pendingTechnique.takeAnnounced(); !name.empty()) {
+                makeThenDrawTimed(name, [&] {
+                    renderer.setTechnique(name);
+                    state.byRegion = false;  // a technique chosen in the panel covers the whole scene
+                }, drawFrame);
+            } else if (const std::string side = state.pendingSplit.takeAnnounced(); !side.empty()) {
+                makeThenDrawTimed(side, [&] {
+                    right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), side));
+                    right->holdSunBoxOf(renderer);  // both sides' maps look at the same box
+                }, drawFrame);
+            } else {
+                drawFrame();
+            }
         } catch (const std::exception& e) {
             log::error("{}", e.what());
             return 1;
@@ -546,11 +561,13 @@ int runViewer(const ViewerOptions& opts) {
             ImGui::Text("%.1f FPS  %.2f ms GPU", state.fps(), shownTimes(renderer, regions.get(), state).totalMs());
             ImGui::End();
         }
-        if (!scriptedChoice.empty()) state.pendingTechnique = std::exchange(scriptedChoice, {});
-        if (!state.pendingTechnique.empty()) {
-            log::info("building {}: its first frame compiles its shaders", state.pendingTechnique);
-            drawBuildingNotice(state.pendingTechnique);
-        }
+        if (!scriptedChoice.empty()) state.pendingTechnique.set(std::exchange(scriptedChoice, {}));
+        for (ViewerState::Pending* pending : {&state.pendingTechnique, &state.pendingSplit})
+            if (!pending->technique.empty() && !pending->announced) {
+                log::info("building {}: its first frame compiles its shaders", pending->technique);
+                drawBuildingNotice(pending->technique);
+                pending->announced = true;
+            }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         // Scripted runs (--exit-after) leave a screenshot of their last frame as proof.
