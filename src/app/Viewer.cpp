@@ -18,6 +18,7 @@
 #include "scene/io/SceneFile.h"
 #include "util/DataPaths.h"
 #include "util/Log.h"
+#include "util/Srgb.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -64,15 +65,19 @@ struct ViewerState {
     // A technique chosen in the panel (or the split view's right side, v) is made after a frame
     // that says so: its first frame builds and compiles its shaders, 3-5 s on llvmpipe with Mesa's
     // shader cache cold, 0.25-0.35 s warm (default scene, stop 79), and the window would freeze
-    // without a word.
+    // without a word. So is a new renderer's first frame (the window's, a dropped scene's): the
+    // frame before it shows the notice over the cleared window, nothing of the scene drawn yet.
     struct Pending {
-        std::string technique;   // "" = none
+        std::string name;        // the technique, or the scene file opened; "" = none
+        bool opening = false;    // a new renderer's first frame, not a technique's
         bool announced = false;  // its notice was drawn in a frame already on screen
-        void set(std::string name) { *this = {std::move(name), false}; }
-        // The technique once announced, taken; "" before.
-        std::string takeAnnounced() { return announced ? std::exchange(*this, {}).technique : std::string(); }
+        void set(std::string what, bool opens = false) { *this = {std::move(what), opens, false}; }
+        bool waiting() const { return !name.empty(); }
+        std::string notice() const { return (opening ? "opening " : "building ") + name + ": its first frame compiles its shaders"; }
+        // The name once announced, taken; "" before.
+        std::string takeAnnounced() { return announced ? std::exchange(*this, {}).name : std::string(); }
     };
-    Pending pendingTechnique, pendingSplit;
+    Pending pendingOpening, pendingTechnique, pendingSplit;
     double fps() const { return frameSeconds > 0 ? 1.0 / frameSeconds : 0.0; }
 };
 
@@ -114,8 +119,7 @@ void parameterWidget(const shadows::Parameter& p) {
 // The notice drawn over the frame before a chosen technique's first, which may take seconds. Sized
 // here, not auto-resized: ImGui hides an auto-resizing window on its first frame, and this one has
 // only one.
-void drawBuildingNotice(const std::string& technique) {
-    const std::string text = "building " + technique + ": its first frame compiles its shaders";
+void drawBuildingNotice(const std::string& text) {
     const ImVec2 display = ImGui::GetIO().DisplaySize, padding = ImGui::GetStyle().WindowPadding;
     const ImVec2 textSize = ImGui::CalcTextSize(text.c_str());
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -125,8 +129,18 @@ void drawBuildingNotice(const std::string& technique) {
     ImGui::End();
 }
 
-// A technique made (`make`: chosen in the panel, or the split view's right side), then the frame,
-// timed to its end into the log: the first frame of a technique compiles its shaders.
+// The window cleared to the scene's background, nothing of the scene drawn: the frame of a new
+// renderer's notice (drawing the scene would be the very wait it announces).
+void clearWindow(const scene::Scene& scene, int w, int h) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, w, h);
+    const glm::vec3 background = util::linearToSrgb(scene.background);  // the window's bytes are sRGB
+    glClearColor(background.r, background.g, background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// A technique made (`make`: chosen in the panel, or the split view's right side; nothing for a new
+// renderer), then the frame, timed to its end into the log: the first frame compiles the shaders.
 void makeThenDrawTimed(const std::string& technique, const std::function<void()>& make, const std::function<void()>& drawFrame) {
     const auto start = std::chrono::steady_clock::now();
     try {
@@ -373,6 +387,7 @@ int runViewer(const ViewerOptions& opts) {
     ImGui_ImplOpenGL3_Init("#version 450 core");
 
     ViewerState state;
+    state.pendingOpening.set(opts.scene.filename().string(), true);
     state.byRegion = render::drawsByRegion(opts.render, *scenePtr) && !right;
     GLFWwindow* win = window.handle();
     glfwSetWindowUserPointer(win, &state);
@@ -425,6 +440,7 @@ int runViewer(const ViewerOptions& opts) {
                 state.time = 0.0f;
                 state.selectedLight = 0;
                 state.loadError.clear();
+                state.pendingOpening.set(file.filename().string(), true);
                 glfwSetWindowTitle(win, ("penumbra - " + file.filename().string()).c_str());
                 log::info("loaded {}", file.string());
             } catch (const std::exception& e) {
@@ -542,6 +558,10 @@ int runViewer(const ViewerOptions& opts) {
                     right = std::make_unique<render::Renderer>(scene, splitSideOptions(renderer.options(), side));
                     right->holdSunBoxOf(renderer);  // both sides' maps look at the same box
                 }, drawFrame);
+            } else if (const std::string opened = state.pendingOpening.takeAnnounced(); !opened.empty()) {
+                makeThenDrawTimed(opened, [] {}, drawFrame);
+            } else if (state.pendingOpening.waiting()) {
+                clearWindow(scene, w, h);
             } else {
                 drawFrame();
             }
@@ -562,11 +582,16 @@ int runViewer(const ViewerOptions& opts) {
             ImGui::End();
         }
         if (!scriptedChoice.empty()) state.pendingTechnique.set(std::exchange(scriptedChoice, {}));
-        for (ViewerState::Pending* pending : {&state.pendingTechnique, &state.pendingSplit})
-            if (!pending->technique.empty() && !pending->announced) {
-                log::info("building {}: its first frame compiles its shaders", pending->technique);
-                drawBuildingNotice(pending->technique);
+        // A technique chosen before a new renderer's notice was shown replaces it: the chosen
+        // one's build is the wait (the renderer's own technique is never compiled).
+        if (state.pendingTechnique.waiting() && !state.pendingOpening.announced) state.pendingOpening = {};
+        // One notice a frame (they would share its window); a second waits for the next frame.
+        for (ViewerState::Pending* pending : {&state.pendingOpening, &state.pendingTechnique, &state.pendingSplit})
+            if (pending->waiting() && !pending->announced) {
+                log::info("{}", pending->notice());
+                drawBuildingNotice(pending->notice());
                 pending->announced = true;
+                break;
             }
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
