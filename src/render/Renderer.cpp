@@ -32,11 +32,6 @@ static void configure(shadows::ShadowTechnique& technique, const RenderOptions& 
                                 "'; its parameters: " + (known.empty() ? "none" : known));
 }
 
-// How many texels around a receiver's own a lookup may read in `light`'s map: the technique's
-// reach (ShadowTechnique::shadowReachTexels), the normal offset, which moves the lookup that many
-// texels besides, and 2 for rounding.
-static float lookupPadTexels(float reach, const gpu::LightData& light) { return reach + light.shadow.z + 2.0f; }
-
 static gl::Program fullscreenProgram(const char* fragment, std::vector<std::string> defines = {}) {
     return gl::Program::build({.vertex = "shaders/passes/fullscreen.vert", .fragment = fragment, .defines = std::move(defines)});
 }
@@ -207,184 +202,157 @@ void Renderer::ensureTargets(int w, int h, bool floatTarget) {
     hdrFbo_ = gl::Framebuffer::colourAndDepth(hdr_, depth_, "main colour target");
 }
 
+// One frame: its set-up (draws, light spaces, the light block, the programs for its light layout),
+// the lights' shadow maps, then the camera's passes (opaque, translucent, resolve).
 void Renderer::render(float time, const scene::Camera& camera, int width, int height, GLuint target, Columns columns) {
     if (width <= 0 || height <= 0) return;  // minimised: nothing to draw into
     srgbFrame_ = shadesIntoSrgb();
     ensureTargets(width, height, !srgbFrame_);
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const glm::mat4 cameraViewProj = camera.projection(aspect) * camera.view();
-    const std::vector<Draw> draws = gpu_.draws(time, camera.position);
-
-    // Light spaces for this frame: objects move, so the directional fit follows them; a sun's box
-    // is held from last frame's while it still holds the view (RenderOptions::holdSunBox).
-    const scene::Bounds bounds = scene_.boundsAt(time);
-    std::vector<shadows::LightSpace> spaces;
-    if (!options_.holdSunBox || lastSpaces_.size() != scene_.lights.size()) lastSpaces_.clear();
-    for (std::size_t i = 0; i < scene_.lights.size(); ++i)
-        spaces.push_back(shadows::computeLightSpace(scene_.lights[i], effectiveResolution(scene_.lights[i]), bounds, camera,
-                                                    aspect, lastSpaces_.empty() ? nullptr : &lastSpaces_[i]));
-    lastSpaces_ = spaces;
-    slots_ = shadows::ShadowSlots::assign(scene_.lights);
-    const gpu::LightBlock block = packLights(scene_.lights, spaces, slots_);
-    lightBlock_.update(0, sizeof(block), &block);
-    lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
-    // A material made translucent at run time rebuilds the programs once (useLightLayout).
-    const bool translucentCasters = anyTranslucentCaster(draws);
-    useLightLayout(withOutputDefines(lightLayoutDefines(block, slots_.sun, translucentCasters)));
-
+    const FrameInputs frame = prepareFrame(time, camera, width, height);
     // Every pass declares its state; between passes GL's initial state holds (no culling:
     // planes and panes are single-sided geometry seen from both sides).
     gl::applyPassState({});
     timer_.beginFrame(frameIndex_);
-    {
-        gl::DebugGroup group("shadow maps");
-        timer_.begin(Pass::Shadow);
-        shadows::ShadowFrame frame;
-        frame.lights = &scene_.lights;
-        frame.lightSpaces = &spaces;
-        frame.slots = &slots_;
-        frame.frameIndex = frameIndex_++;
-        frame.camera = &camera;
-        frame.aspect = aspect;
-        frame.sceneBounds = bounds;
-        frame.surfaceBounds = [&] {
-            std::vector<scene::Bounds> boxes;
-            for (const Draw& d : draws) gpu_.addSurfaceBounds(d, boxes);
-            return boxes;
-        };
-        frame.reuseStillCasters = options_.reuseStillCasters;
-        frame.holdSunBox = options_.holdSunBox;
-        frame.translucentCasters = translucentCasters;
-        frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
-            for (const Draw& d : draws)
-                if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
-                    cullBackFacesOfSolid(d, options_.cullSolidBackFaces, cameraViewProj);  // seen from the camera, as drawSurfaces is
-                    gpu_.draw(d, programs.of(*d.material));
-                }
-            glDisable(GL_CULL_FACE);
-        };
-        frame.scene = &scene_;
-        frame.time = time;
-        frame.viewport = {width, height};
-        // The views fitted first: flatCasterNeeds asks for the reach of this frame's maps.
-        technique_->fitToView(frame);
-        shadowTriangles_.assign(scene_.lights.size(), 0);
-        const std::vector<FlatCasterNeed>& flatNeeds = flatCasterNeeds(draws, block);
-        // The boxes a flat part is drawn near in this selection's light's maps (none: drawn whole).
-        // Near moving casters only in passes that redraw wherever they are and were.
-        const auto nearOf = [&](std::size_t index, const shadows::CasterSelection& selection) -> const NearCasters* {
-            const auto& near = flatNeeds[index].near;
-            const auto light = static_cast<std::size_t>(selection.light);
-            if (selection.light < 0 || light >= near.size() || near[light].empty()) return nullptr;
-            const bool follows = selection.map && selection.map->followsMovingCasters;
-            return near[light].moving.empty() || follows ? &near[light] : nullptr;
-        };
-        // The texels of selection.map a flat part drawn near `boxes` is drawn in (a scissor).
-        const auto nearTexels = [&](std::span<const OrientedBox::Corners> boxes, const shadows::CasterSelection& selection) {
-            const float pad = lookupPadTexels(flatCasterReach().texels, block.lights[selection.light]);
-            return selection.map->texelsNear(boxes, *selection.lightViewProj, pad);
-        };
-        const auto selected = [&](const Draw& d, const shadows::CasterSelection& selection) {
-            using shadows::Motion;
-            const auto index = static_cast<std::size_t>(&d - draws.data());  // d is one of draws
-            return d.castsShadow && d.translucent == (selection.casters == shadows::Casters::Translucent) &&
-                   (selection.motion == Motion::Any || d.moving == (selection.motion == Motion::Moving)) &&
-                   !(selection.light >= 0 && (flatNeeds[index].nothing >> selection.light & 1u)) &&
-                   !(selection.cull && outsideClipVolume(d.worldBounds, *selection.cull)) &&
-                   !outsideAnyPlane(d.worldBounds, selection.cullPlanes);
-        };
-        frame.casterBounds = [&](const shadows::CasterSelection& selection) {
-            scene::Bounds all;
-            for (const Draw& d : draws)
-                if (selected(d, selection)) all.add(d.worldBounds);
-            return all;
-        };
-        frame.casterTexels = [&](const shadows::CasterSelection& selection) {
-            using shadows::CasterMap;
-            std::vector<OrientedBox::Corners> whole;  // the casters drawn whole
-            glm::ivec4 near(0);                       // and the scissors of those drawn near others
-            shadows::CasterSelection any = selection;
-            any.motion = shadows::Motion::Any;
-            for (const Draw& d : draws) {
-                const auto* boxes = nearOf(static_cast<std::size_t>(&d - draws.data()), selection);
-                if (selected(d, selection)) {
-                    if (boxes) {
-                        near = CasterMap::united(near, CasterMap::united(nearTexels(boxes->still, selection), nearTexels(boxes->moving, selection)));
-                    } else {
-                        whole.push_back(d.worldBounds.corners());
-                    }
-                } else if (boxes && selection.motion == shadows::Motion::Moving && selected(d, any)) {
-                    near = CasterMap::united(near, nearTexels(boxes->moving, selection));  // a still ground following them
-                }
-            }
-            return CasterMap::united(near, selection.map->texelsNear(whole, *selection.lightViewProj, 0.0f));
-        };
-        frame.casterBoxes = [&](const shadows::CasterSelection& selection) {
-            std::vector<scene::Bounds> boxes;
-            for (const Draw& d : draws)
-                if (selected(d, selection)) boxes.push_back(d.worldBounds);
-            return boxes;
-        };
-        frame.casterDigest = [&](const shadows::CasterSelection& selection) {
-            util::Digest digest;
-            for (const Draw& d : draws) {
-                if (!selected(d, selection)) continue;
-                digest.add(d.object, d.mesh, d.part, d.model, d.material->alphaCutoff, d.material->diffuseTexture);
-                // A big part's clusters drawn: its column planes may move while the rest holds.
-                if (selection.cull && !selection.cullPlanes.empty())
-                    if (const auto ranges = gpu_.rangesInside(d, *selection.cull, selection.cullPlanes))
-                        for (const IndexRange& r : *ranges) digest.add(r.firstIndex, r.indexCount);
-                // A flat part drawn only near still casters holds what they were when it was drawn.
-                const auto& near = flatNeeds[static_cast<std::size_t>(&d - draws.data())].near;
-                if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < near.size())
-                    for (const OrientedBox::Corners& box : near[static_cast<std::size_t>(selection.light)].still) digest.add(box);
-            }
-            return digest.value();
-        };
-        frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
-            if (selection.lightViewProj) {
-                programs.plain->set("uLightViewProj", *selection.lightViewProj);
-                programs.textured->set("uLightViewProj", *selection.lightViewProj);
-            }
-            const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthOnly && selection.lightViewProj
-                                    ? facesTurnedAway(*selection.lightViewProj) : GL_NONE;
-            glCullFace(away == GL_NONE ? GL_BACK : away);
-            const glm::mat4 through = selection.lightViewProj.value_or(glm::mat4(1.0f));
-            for (const Draw& d : draws) {
-                if (!selected(d, selection)) continue;
-                cullBackFacesOfSolid(d, away != GL_NONE, through);
-                const auto draw = [&] {
-                    return selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull, selection.cullPlanes)
-                                          : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
-                };
-                // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds):
-                // near the still ones, and apart near the moving ones, so that each rectangle
-                // depends on its casters alone.
-                const auto* near = selection.map && selection.lightViewProj ? nearOf(static_cast<std::size_t>(&d - draws.data()), selection) : nullptr;
-                std::size_t drawn = 0;
-                if (!near) {
-                    drawn = draw();
-                } else {
-                    glEnable(GL_SCISSOR_TEST);
-                    for (const glm::ivec4& t : {nearTexels(near->still, selection), nearTexels(near->moving, selection)}) {
-                        if (t.x >= t.z || t.y >= t.w) continue;
-                        glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
-                        drawn += draw();
-                    }
-                    const glm::ivec4 t = selection.map->texels;  // the pass's own scissor back
-                    glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
-                    if (!selection.map->scissored) glDisable(GL_SCISSOR_TEST);
-                }
-                if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
-                    shadowTriangles_[static_cast<std::size_t>(selection.light)] += drawn;
-            }
-            glCullFace(GL_BACK);
-            glDisable(GL_CULL_FACE);  // as the pass set it (PassState::cullFace is false in every caster pass)
-        };
-        technique_->renderMaps(frame);
-        timer_.end(Pass::Shadow);
-    }
+    renderShadowMaps(frame);
+    renderCameraPasses(frame, target, columns);
+    // No program of this renderer's stays current: a frame shaded straight into sRGB ends on a
+    // lighting program, whose textures go with the renderer, and a driver may check the current
+    // program at the caller's next clear (see gl::unbindTextureUnits).
+    glUseProgram(0);
+    timer_.endFrame();
+}
 
+Renderer::FrameInputs Renderer::prepareFrame(float time, const scene::Camera& camera, int width, int height) {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    FrameInputs frame{time, camera, aspect, width, height, camera.projection(aspect) * camera.view(), gpu_.draws(time, camera.position)};
+    const std::vector<Draw>& draws = frame.draws;
+    // Light spaces for this frame: objects move, so the directional fit follows them; a sun's box
+    // is held from last frame's while it still holds the view (RenderOptions::holdSunBox).
+    frame.bounds = scene_.boundsAt(time);
+    std::vector<shadows::LightSpace>& spaces = frame.spaces;
+    if (!options_.holdSunBox || lastSpaces_.size() != scene_.lights.size()) lastSpaces_.clear();
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i)
+        spaces.push_back(shadows::computeLightSpace(scene_.lights[i], effectiveResolution(scene_.lights[i]), frame.bounds, camera,
+                                                    aspect, lastSpaces_.empty() ? nullptr : &lastSpaces_[i]));
+    lastSpaces_ = spaces;
+    slots_ = shadows::ShadowSlots::assign(scene_.lights);
+    frame.block = packLights(scene_.lights, spaces, slots_);
+    const gpu::LightBlock& block = frame.block;
+    lightBlock_.update(0, sizeof(block), &block);
+    lightBlock_.bindBase(GL_UNIFORM_BUFFER, gpu::kLightBlockBinding);
+    // A material made translucent at run time rebuilds the programs once (useLightLayout).
+    frame.translucentCasters = anyTranslucentCaster(draws);
+    useLightLayout(withOutputDefines(lightLayoutDefines(block, slots_.sun, frame.translucentCasters)));
+    return frame;
+}
+
+// The lights' maps (the technique's passes), with the frame's casters offered through
+// shadows::ShadowFrame: which a pass selects, where in its map they write, and their draws.
+void Renderer::renderShadowMaps(const FrameInputs& in) {
+    const std::vector<Draw>& draws = in.draws;
+    const gpu::LightBlock& block = in.block;
+    const scene::Camera& camera = in.camera;
+    const glm::mat4& cameraViewProj = in.cameraViewProj;
+    const float time = in.time, aspect = in.aspect;
+    const int width = in.width, height = in.height;
+    gl::DebugGroup group("shadow maps");
+    timer_.begin(Pass::Shadow);
+    shadows::ShadowFrame frame;
+    frame.lights = &scene_.lights;
+    frame.lightSpaces = &in.spaces;
+    frame.slots = &slots_;
+    frame.frameIndex = frameIndex_++;
+    frame.camera = &camera;
+    frame.aspect = aspect;
+    frame.sceneBounds = in.bounds;
+    frame.surfaceBounds = [&] {
+        std::vector<scene::Bounds> boxes;
+        for (const Draw& d : draws) gpu_.addSurfaceBounds(d, boxes);
+        return boxes;
+    };
+    frame.reuseStillCasters = options_.reuseStillCasters;
+    frame.holdSunBox = options_.holdSunBox;
+    frame.translucentCasters = in.translucentCasters;
+    frame.drawSurfaces = [&](shadows::DrawPrograms programs, int onlyObject) {
+        for (const Draw& d : draws)
+            if (d.visible && !d.translucent && (onlyObject < 0 || d.object == static_cast<std::size_t>(onlyObject))) {
+                cullBackFacesOfSolid(d, options_.cullSolidBackFaces, cameraViewProj);  // seen from the camera, as drawSurfaces is
+                gpu_.draw(d, programs.of(*d.material));
+            }
+        glDisable(GL_CULL_FACE);
+    };
+    frame.scene = &scene_;
+    frame.time = time;
+    frame.viewport = {width, height};
+    // The views fitted first: flatCasterNeeds asks for the reach of this frame's maps.
+    technique_->fitToView(frame);
+    shadowTriangles_.assign(scene_.lights.size(), 0);
+    const CasterQueries casters(draws, flatCasterNeeds(draws, block), gpu_, block, flatCasterReach().texels);
+    frame.casterBounds = [&](const shadows::CasterSelection& selection) { return casters.bounds(selection); };
+    frame.casterTexels = [&](const shadows::CasterSelection& selection) { return casters.texels(selection); };
+    frame.casterBoxes = [&](const shadows::CasterSelection& selection) { return casters.boxes(selection); };
+    frame.casterDigest = [&](const shadows::CasterSelection& selection) { return casters.digest(selection); };
+    frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
+        drawCasters(casters, draws, programs, selection);
+    };
+    technique_->renderMaps(frame);
+    timer_.end(Pass::Shadow);
+}
+
+// A caster pass's draws: the selection's casters, back faces of solids culled where only the
+// nearest depth counts, a ground carrying casters scissored to where their lookups read it; the
+// triangles drawn counted per light.
+void Renderer::drawCasters(const CasterQueries& casters, const std::vector<Draw>& draws, shadows::DrawPrograms programs,
+                           const shadows::CasterSelection& selection) {
+    if (selection.lightViewProj) {
+        programs.plain->set("uLightViewProj", *selection.lightViewProj);
+        programs.textured->set("uLightViewProj", *selection.lightViewProj);
+    }
+    const GLenum away = options_.cullSolidBackFaces && selection.nearestDepthOnly && selection.lightViewProj
+                            ? facesTurnedAway(*selection.lightViewProj) : GL_NONE;
+    glCullFace(away == GL_NONE ? GL_BACK : away);
+    const glm::mat4 through = selection.lightViewProj.value_or(glm::mat4(1.0f));
+    for (const Draw& d : draws) {
+        if (!casters.selected(d, selection)) continue;
+        cullBackFacesOfSolid(d, away != GL_NONE, through);
+        const auto draw = [&] {
+            return selection.cull ? gpu_.drawInside(d, programs.of(*d.material), *selection.cull, selection.cullPlanes)
+                                  : (gpu_.draw(d, programs.of(*d.material)), d.triangles);
+        };
+        // A ground carrying casters, drawn only where their lookups read it (flatCasterNeeds):
+        // near the still ones, and apart near the moving ones, so that each rectangle
+        // depends on its casters alone.
+        const NearCasters* near = selection.map && selection.lightViewProj ? casters.nearOf(d, selection) : nullptr;
+        std::size_t drawn = 0;
+        if (!near) {
+            drawn = draw();
+        } else {
+            glEnable(GL_SCISSOR_TEST);
+            for (const glm::ivec4& t : {casters.nearTexels(near->still, selection), casters.nearTexels(near->moving, selection)}) {
+                if (t.x >= t.z || t.y >= t.w) continue;
+                glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
+                drawn += draw();
+            }
+            const glm::ivec4 t = selection.map->texels;  // the pass's own scissor back
+            glScissor(t.x, t.y, t.z - t.x, t.w - t.y);
+            if (!selection.map->scissored) glDisable(GL_SCISSOR_TEST);
+        }
+        if (selection.light >= 0 && static_cast<std::size_t>(selection.light) < shadowTriangles_.size())
+            shadowTriangles_[static_cast<std::size_t>(selection.light)] += drawn;
+    }
+    glCullFace(GL_BACK);
+    glDisable(GL_CULL_FACE);  // as the pass set it (PassState::cullFace is false in every caster pass)
+}
+
+// The camera's passes: opaque surfaces (after the tint split and the lights' and shadows' reach
+// chose each draw's programs), translucent ones, then the resolve into `target`.
+void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns columns) {
+    const std::vector<Draw>& draws = in.draws;
+    const gpu::LightBlock& block = in.block;
+    const scene::Camera& camera = in.camera;
+    const glm::mat4& cameraViewProj = in.cameraViewProj;
+    const float aspect = in.aspect;
+    const int width = in.width, height = in.height;
     // A column range scissors every camera pass, clears included, and the output.
     const int first = std::clamp(columns.first, 0, width), last = columns.last < 0 ? width : std::clamp(columns.last, first, width);
     const bool partial = first > 0 || last < width;
@@ -475,11 +443,6 @@ void Renderer::render(float time, const scene::Camera& camera, int width, int he
         timer_.end(Pass::Post);
     }
     if (partial) glDisable(GL_SCISSOR_TEST);
-    // No program of this renderer's stays current: a frame shaded straight into sRGB ends on a
-    // lighting program, whose textures go with the renderer, and a driver may check the current
-    // program at the caller's next clear (see gl::unbindTextureUnits).
-    glUseProgram(0);
-    timer_.endFrame();
 }
 
 // Lights added, removed, retyped or shadowed differently change the layout the lighting
@@ -950,7 +913,7 @@ Renderer::FlatCasterReach Renderer::flatCasterReach() const {
     return {technique_->shadowReachTexels(), technique_->shadowReachDepth(), false};
 }
 
-const std::vector<Renderer::FlatCasterNeed>& Renderer::flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
+const std::vector<FlatCasterNeed>& Renderer::flatCasterNeeds(const std::vector<Draw>& draws, const gpu::LightBlock& block) const {
     const auto [reach, depthReach, filtered] = flatCasterReach();
     if (!options_.onlyCastersThatShadow || reach < 0.0f) {  // every caster drawn whole
         flatCasterNeedsKey_ = 0;

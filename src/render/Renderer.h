@@ -9,6 +9,7 @@
 #include "gl/Sampler.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/CasterQueries.h"
 #include "render/FrameMemo.h"
 #include "render/FrameTimer.h"
 #include "render/GpuScene.h"
@@ -202,6 +203,26 @@ public:
 
 private:
     void ensureTargets(int width, int height, bool floatTarget);
+    // What every pass of one frame reads: the camera, the frame's draws (GpuScene::draws order), the
+    // lights' spaces and their uniform block.
+    struct FrameInputs {
+        float time;
+        const scene::Camera& camera;
+        float aspect;
+        int width, height;
+        glm::mat4 cameraViewProj;
+        std::vector<Draw> draws;
+        scene::Bounds bounds;                     // every object at `time`
+        std::vector<shadows::LightSpace> spaces;  // one per light
+        gpu::LightBlock block{};
+        bool translucentCasters = false;
+    };
+    // The frame's inputs, the light block uploaded and the lighting programs made for its layout.
+    FrameInputs prepareFrame(float time, const scene::Camera& camera, int width, int height);
+    void renderShadowMaps(const FrameInputs& frame);
+    void drawCasters(const CasterQueries& casters, const std::vector<Draw>& draws, shadows::DrawPrograms programs,
+                     const shadows::CasterSelection& selection);
+    void renderCameraPasses(const FrameInputs& frame, GLuint target, Columns columns);
     // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
     struct TintedPixels {
         TintLookup lookup = TintLookup::Whole;  // of the whole draw, unless it is split
@@ -243,31 +264,6 @@ private:
     // RenderOptions::lightOnlyWhereReached: the reach of every projector and spot light per draw.
     void addLightReach(TintSplit& split, const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj,
                        int width, int height) const;
-    // The boxes of the draws a flat part is drawn near: still ones, and (with a filtered lookup,
-    // FlatCasterReach) moving ones, drawn near only in passes that follow them
-    // (CasterMap::followsMovingCasters).
-    struct NearCasters {
-        std::vector<OrientedBox::Corners> still, moving;
-        bool empty() const { return still.empty() && moving.empty(); }
-    };
-    // What a light's maps need of an opaque flat part (no solid) that shadows none of its own
-    // points, with a technique that bounds its lookup's reach. Its map texels hold what lies
-    // behind it where it is left out, and every lookup answers as before: receivers' own texels
-    // count as lit, and no receiver it is not drawn for lies behind it within that reach. A
-    // filtered lookup (moment maps) reads the part's own texels averaged with its occluders':
-    // there it also needs the part around the shadows on it.
-    struct FlatCasterNeed {
-        // A bit per light whose maps leave the part out: its shadow footprint on every other draw
-        // is empty (as addShadowReach pads it), and with a filtered lookup no opaque caster's
-        // footprint reaches it.
-        std::uint32_t nothing = 0;
-        // Per light (empty where the part is drawn whole or not at all): the boxes of the draws
-        // its footprint reaches, a ground carrying them, and with a filtered lookup of the opaque
-        // casters whose footprint reaches it. The part is drawn only where their lookups read,
-        // their texels and the lookup's reach around them (drawCasters' scissor,
-        // CasterMap::texelsNear).
-        std::vector<NearCasters> near;
-    };
     // The technique's reach flatCasterNeeds judges flat parts by, in texels of the light's map,
     // with its reach in depth (negative: both sides of a caster count); `filtered`: its
     // filterReachTexels, else its shadowReachTexels and shadowReachDepth.
