@@ -348,9 +348,7 @@ void Renderer::drawCasters(const CasterQueries& casters, const std::vector<Draw>
 // chose each draw's programs), translucent ones, then the resolve into `target`.
 void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns columns) {
     const std::vector<Draw>& draws = in.draws;
-    const gpu::LightBlock& block = in.block;
     const scene::Camera& camera = in.camera;
-    const glm::mat4& cameraViewProj = in.cameraViewProj;
     const float aspect = in.aspect;
     const int width = in.width, height = in.height;
     // A column range scissors every camera pass, clears included, and the output.
@@ -360,18 +358,7 @@ void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns 
         glEnable(GL_SCISSOR_TEST);
         glScissor(first, 0, last - first, height);
     }
-    const auto splitStart = std::chrono::steady_clock::now();
-    footprintCells_.nextFrame();
-    reachCells_.nextFrame();
-    shadowCells_.nextFrame();
-    TintSplit tintSplit = splitByTint(draws, block, cameraViewProj, width, height, PixelRect{first, 0, last, height});
-    tintSplit.scissored = partial;
-    addLightReach(tintSplit, draws, block, cameraViewProj, width, height);
-    addShadowReach(tintSplit, draws, block, cameraViewProj, width, height);
-    tintShading_ = tally(tintSplit, draws);
-    tintShading_.footprintsMade = footprintCells_.madeThisFrame() + reachCells_.madeThisFrame() + shadowCells_.madeThisFrame();
-    tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
-    const bool shaded = options_.output == OutputMode::Shaded;
+    const TintSplit tintSplit = splitReceivers(in, PixelRect{first, 0, last, height}, partial);
     const GLuint frameFbo = srgbFrame_ ? srgb_.begin(target, width, height, depth_) : hdrFbo_.id();
     // An sRGB frame's opaque surfaces write its bytes unblended, their shader encoding sRGB itself
     // (ENCODE_SRGB_IN_SHADER, SrgbTarget::bytesFramebuffer). What blends over them (translucent
@@ -386,18 +373,7 @@ void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns 
         glEnable(GL_FRAMEBUFFER_SRGB);
         srgbView = true;
     };
-    glBindFramebuffer(GL_FRAMEBUFFER, opaqueFbo);
-    glViewport(0, 0, width, height);
-    // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
-    // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
-    glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
-    if (srgbFrame_) clear = glm::vec4(util::linearToSrgb(glm::vec3(clear)), clear.a);
-    // NVIDIA validates the current program's samplers on a clear: another engine's program, still
-    // current though deleted, must not be judged against this frame's texture units.
-    glUseProgram(0);
-    glClearNamedFramebufferfv(opaqueFbo, GL_COLOR, 0, &clear.x);
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(opaqueFbo, GL_DEPTH, 0, &farDepth);
+    clearCameraTarget(opaqueFbo, width, height);
     {
         gl::DebugGroup group("opaque");
         timer_.begin(Pass::Opaque);
@@ -409,27 +385,7 @@ void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns 
         }
         timer_.end(Pass::Opaque);
     }
-    {
-        gl::DebugGroup group("translucent");
-        timer_.begin(Pass::Translucent);
-        // Debug channels show the nearest opaque surface, or with debugTranslucent the nearest
-        // surface (drawSurfaces: depth-tested and written, not blended).
-        const TransparencyMode mode = options_.transparency;
-        if (shaded ? isSorted(mode) : options_.debugTranslucent) {
-            const bool anyTranslucent = std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.visible && d.translucent; });
-            if (anyTranslucent) throughSrgbView();
-            fogDepth_ = fogInShading() && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
-            drawSurfaces(draws, true, camera, aspect, &tintSplit);
-            fogDepth_ = nullptr;
-        } else if (shaded) {
-            if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
-            bindLightingUnits();
-            oit_->render(mode, options_.peelLayers, gpu_, draws,
-                         [&](const gl::Program& p) { prepareLighting(p, true, camera, aspect); }, hdrFbo_, depth_, width,
-                         height);
-        }
-        timer_.end(Pass::Translucent);
-    }
+    drawTranslucentPass(in, tintSplit, throughSrgbView);
     {
         gl::DebugGroup group("resolve");
         timer_.begin(Pass::Post);
@@ -443,6 +399,66 @@ void Renderer::renderCameraPasses(const FrameInputs& in, GLuint target, Columns 
         timer_.end(Pass::Post);
     }
     if (partial) glDisable(GL_SCISSOR_TEST);
+}
+
+// Each receiver's pieces for this frame's camera passes (TintSplit): the tint split, then the
+// lights' and their shadows' reach; the choice's tally and CPU time go to tintShading_.
+Renderer::TintSplit Renderer::splitReceivers(const FrameInputs& in, PixelRect area, bool scissored) {
+    const auto splitStart = std::chrono::steady_clock::now();
+    footprintCells_.nextFrame();
+    reachCells_.nextFrame();
+    shadowCells_.nextFrame();
+    TintSplit split = splitByTint(in.draws, in.block, in.cameraViewProj, in.width, in.height, area);
+    split.scissored = scissored;
+    addLightReach(split, in.draws, in.block, in.cameraViewProj, in.width, in.height);
+    addShadowReach(split, in.draws, in.block, in.cameraViewProj, in.width, in.height);
+    tintShading_ = tally(split, in.draws);
+    tintShading_.footprintsMade = footprintCells_.madeThisFrame() + reachCells_.madeThisFrame() + shadowCells_.madeThisFrame();
+    tintShading_.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - splitStart).count();
+    return split;
+}
+
+// The camera target cleared: the background, far depth.
+void Renderer::clearCameraTarget(GLuint fbo, int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, width, height);
+    // Alpha 1 marks a pixel a surface of this renderer covers (debug channels: any surface; region
+    // views: its own, setReceivers); the shaded background is 1 too unless another renderer owns it.
+    const bool shaded = options_.output == OutputMode::Shaded;
+    glm::vec4 clear = shaded ? glm::vec4(scene_.background, ownPixelsOnly_ ? 0.0f : 1.0f) : glm::vec4(0.0f);
+    if (srgbFrame_) clear = glm::vec4(util::linearToSrgb(glm::vec3(clear)), clear.a);
+    // NVIDIA validates the current program's samplers on a clear: another engine's program, still
+    // current though deleted, must not be judged against this frame's texture units.
+    glUseProgram(0);
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &clear.x);
+    const float farDepth = 1.0f;
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+}
+
+// Translucent surfaces over the opaque frame: sorted and blended (through the sRGB view when the
+// frame is sRGB), or one of the order-independent modes into the float target.
+void Renderer::drawTranslucentPass(const FrameInputs& in, const TintSplit& tintSplit, const std::function<void()>& throughSrgbView) {
+    gl::DebugGroup group("translucent");
+    timer_.begin(Pass::Translucent);
+    // Debug channels show the nearest opaque surface, or with debugTranslucent the nearest
+    // surface (drawSurfaces: depth-tested and written, not blended).
+    const bool shaded = options_.output == OutputMode::Shaded;
+    const TransparencyMode mode = options_.transparency;
+    const std::vector<Draw>& draws = in.draws;
+    if (shaded ? isSorted(mode) : options_.debugTranslucent) {
+        const bool anyTranslucent = std::any_of(draws.begin(), draws.end(), [](const Draw& d) { return d.visible && d.translucent; });
+        if (anyTranslucent) throughSrgbView();
+        fogDepth_ = fogInShading() && anyTranslucent ? &srgb_.opaqueDepthCopy(depth_) : nullptr;
+        drawSurfaces(draws, true, in.camera, in.aspect, &tintSplit);
+        fogDepth_ = nullptr;
+    } else if (shaded) {
+        if (!oit_) oit_ = std::make_unique<OrderIndependentTransparency>(technique_->lookupShader(), lightingDefines_);
+        bindLightingUnits();
+        oit_->render(mode, options_.peelLayers, gpu_, draws,
+                     [&](const gl::Program& p) { prepareLighting(p, true, in.camera, in.aspect); }, hdrFbo_, depth_, in.width,
+                     in.height);
+    }
+    timer_.end(Pass::Translucent);
 }
 
 // Lights added, removed, retyped or shadowed differently change the layout the lighting

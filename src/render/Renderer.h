@@ -22,6 +22,7 @@
 #include "shadows/ShadowTechnique.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -257,6 +258,11 @@ private:
         TintLookup lookup = TintLookup::Whole;
         unsigned unlit = 0, unshadowed = 0;
     };
+    // The frame's receivers cut into pieces (splitByTint, addLightReach, addShadowReach), tallied
+    // into tintShading_; `scissored`: a column range scissors the camera passes.
+    TintSplit splitReceivers(const FrameInputs& frame, PixelRect area, bool scissored);
+    void clearCameraTarget(GLuint framebuffer, int width, int height);
+    void drawTranslucentPass(const FrameInputs& frame, const TintSplit& split, const std::function<void()>& throughSrgbView);
     // `area`: the pixels of the width x height frame the camera passes draw (a column range).
     TintSplit splitByTint(const std::vector<Draw>& draws, const gpu::LightBlock& block, const glm::mat4& viewProj, int width, int height,
                           PixelRect area) const;
