@@ -116,9 +116,9 @@ void parameterWidget(const shadows::Parameter& p) {
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s (default %s)", p.help.c_str(), p.defaultText.c_str());
 }
 
-// The notice drawn over the frame before a chosen technique's first, which may take seconds. Sized
-// here, not auto-resized: ImGui hides an auto-resizing window on its first frame, and this one has
-// only one.
+// The notice drawn over the frame before a first frame that may take seconds (a chosen technique's,
+// a new renderer's: ViewerState::Pending::notice). Sized here, not auto-resized: ImGui hides an
+// auto-resizing window on its first frame, and this one has only one.
 void drawBuildingNotice(const std::string& text) {
     const ImVec2 display = ImGui::GetIO().DisplaySize, padding = ImGui::GetStyle().WindowPadding;
     const ImVec2 textSize = ImGui::CalcTextSize(text.c_str());

@@ -57,7 +57,9 @@ public:
                   const gpu::LightBlock& block, float reachTexels)
         : draws_(draws), needs_(needs), gpu_(gpu), block_(block), reachTexels_(reachTexels) {}
 
-    // Whether the selection takes `d` (one of the frame's draws).
+    // The frame's draws the answers index into (a pass iterates these, not a copy).
+    const std::vector<Draw>& draws() const { return draws_; }
+    // Whether the selection takes `d` (one of draws()).
     bool selected(const Draw& d, const shadows::CasterSelection& selection) const;
     // The boxes `d` (a flat part) is drawn near in the selection's light's maps; null: drawn whole.
     // Near moving casters only in passes that redraw wherever they are and were.

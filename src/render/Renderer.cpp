@@ -293,7 +293,7 @@ void Renderer::renderShadowMaps(const FrameInputs& in) {
     frame.casterBoxes = [&](const shadows::CasterSelection& selection) { return casters.boxes(selection); };
     frame.casterDigest = [&](const shadows::CasterSelection& selection) { return casters.digest(selection); };
     frame.drawCasters = [&](shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
-        drawCasters(casters, draws, programs, selection);
+        drawCasters(casters, programs, selection);
     };
     technique_->renderMaps(frame);
     timer_.end(Pass::Shadow);
@@ -302,8 +302,7 @@ void Renderer::renderShadowMaps(const FrameInputs& in) {
 // A caster pass's draws: the selection's casters, back faces of solids culled where only the
 // nearest depth counts, a ground carrying casters scissored to where their lookups read it; the
 // triangles drawn counted per light.
-void Renderer::drawCasters(const CasterQueries& casters, const std::vector<Draw>& draws, shadows::DrawPrograms programs,
-                           const shadows::CasterSelection& selection) {
+void Renderer::drawCasters(const CasterQueries& casters, shadows::DrawPrograms programs, const shadows::CasterSelection& selection) {
     if (selection.lightViewProj) {
         programs.plain->set("uLightViewProj", *selection.lightViewProj);
         programs.textured->set("uLightViewProj", *selection.lightViewProj);
@@ -312,7 +311,7 @@ void Renderer::drawCasters(const CasterQueries& casters, const std::vector<Draw>
                             ? facesTurnedAway(*selection.lightViewProj) : GL_NONE;
     glCullFace(away == GL_NONE ? GL_BACK : away);
     const glm::mat4 through = selection.lightViewProj.value_or(glm::mat4(1.0f));
-    for (const Draw& d : draws) {
+    for (const Draw& d : casters.draws()) {
         if (!casters.selected(d, selection)) continue;
         cullBackFacesOfSolid(d, away != GL_NONE, through);
         const auto draw = [&] {

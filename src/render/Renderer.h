@@ -221,8 +221,7 @@ private:
     // The frame's inputs, the light block uploaded and the lighting programs made for its layout.
     FrameInputs prepareFrame(float time, const scene::Camera& camera, int width, int height);
     void renderShadowMaps(const FrameInputs& frame);
-    void drawCasters(const CasterQueries& casters, const std::vector<Draw>& draws, shadows::DrawPrograms programs,
-                     const shadows::CasterSelection& selection);
+    void drawCasters(const CasterQueries& casters, shadows::DrawPrograms programs, const shadows::CasterSelection& selection);
     void renderCameraPasses(const FrameInputs& frame, GLuint target, Columns columns);
     // How each opaque draw is shaded where translucent casters may tint it (render/TintReach.h).
     struct TintedPixels {
